@@ -1,0 +1,98 @@
+#ifndef hrcontact_equilibrium_system_h
+#define hrcontact_equilibrium_system_h
+
+#include <deal.II/base/types.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hrcontact
+{
+  /** The three row classes of eq. 38. */
+  enum class RowClass
+  {
+    free,       ///< C: equilibrium C s = f is a hard constraint
+    contact,    ///< Q: normal row of a constrained node, p = Q s - q
+    prescribed, ///< H: prescribed displacement component, r = H s - f_H
+  };
+
+  /**
+   * One row of the rotated equilibrium system: a unit combination of the
+   * dim displacement rows of one node (the identity for unrotated nodes, the
+   * normal or a tangent for nodes with a normal constraint). The rows of a
+   * node form an orthonormal basis, so nodal displacements are recovered as
+   * sum_r value_r * combination_r.
+   */
+  struct EquilibriumRow
+  {
+    RowClass                                                     row_class;
+    std::vector<std::pair<dealii::types::global_dof_index, double>> combination;
+    /** Prescribed value: u-hat for H rows, the gap g for Q rows. */
+    double       value = 0;
+    unsigned int node  = 0;
+  };
+
+  /**
+   * The discrete blocks of section 4.2 with the row classification: the
+   * block-diagonal flexibility F (one dense SPD block per cell), the
+   * equilibrium matrix B (displacement rows x stress columns, B_ij =
+   * int eps(phi_i) : psi_j), the load vector f, and the rotated rows.
+   * Dimension-independent: the reduction and the solvers only see this.
+   */
+  struct EquilibriumSystem
+  {
+    unsigned int dim                 = 2;
+    unsigned int n_displacement_dofs = 0;
+    unsigned int n_stress_dofs       = 0;
+
+    std::vector<std::vector<dealii::types::global_dof_index>> cell_stress_dofs;
+    std::vector<dealii::FullMatrix<double>>                   cell_flexibility;
+
+    dealii::SparsityPattern      sparsity;
+    dealii::SparseMatrix<double> B;
+    dealii::Vector<double>       load;
+
+    std::vector<EquilibriumRow> rows;
+    std::vector<unsigned int>   free_rows, contact_rows, prescribed_rows;
+    std::vector<std::array<double, 3>> node_coordinates;
+
+    /** (B~ s)_r for the rotated row r. */
+    double
+    row_times(const EquilibriumRow &row, const dealii::Vector<double> &s) const;
+
+    /** v += coefficient * (B~_r)^T. */
+    void
+    add_row_transpose(const EquilibriumRow   &row,
+                      const double            coefficient,
+                      dealii::Vector<double> &v) const;
+
+    /** The rotated load f~_r. */
+    double
+    row_load(const EquilibriumRow &row) const;
+
+    /** Fs = F s, cell block by cell block. */
+    void
+    multiply_flexibility(const dealii::Vector<double> &s,
+                         dealii::Vector<double>       &Fs) const;
+
+    /** Global displacement vector from one value per row. */
+    void
+    displacements_from_row_values(const std::vector<double> &row_values,
+                                  dealii::Vector<double>    &u) const;
+
+    /** "node (x, y)" and, for rotated rows, the direction. */
+    std::string
+    describe_row(const unsigned int r) const;
+    std::string
+    describe_node(const unsigned int node) const;
+  };
+} // namespace hrcontact
+
+#endif

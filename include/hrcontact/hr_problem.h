@@ -1,0 +1,82 @@
+#ifndef hrcontact_hr_problem_h
+#define hrcontact_hr_problem_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <hrcontact/equilibrium_reduction.h>
+#include <hrcontact/equilibrium_system.h>
+#include <hrcontact/mixed_spaces.h>
+#include <hrcontact/postprocessor.h>
+#include <hrcontact/scene.h>
+
+#include <ostream>
+#include <string>
+
+namespace hrcontact
+{
+  /** Where results go and how chatty a run is. */
+  struct OutputSettings
+  {
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    std::string directory    = "output";
+    bool        write_vtu    = true;
+    bool        print_timing = true;
+  };
+
+  /**
+   * A linear elastic run with bilateral supports: mesh, spaces, HR blocks,
+   * equilibrium reduction, maximisation of the complementary energy,
+   * displacements (eq. 51), postprocessing. The pieces stay accessible so
+   * that tests can check identities on them.
+   */
+  template <int dim>
+  class HRProblem
+  {
+  public:
+    /** Declare every parameter a run reads (all dimensions alike). */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    explicit HRProblem(dealii::ParameterHandler &prm);
+
+    /** Everything up to and including the solve; no files written. */
+    void
+    solve(std::ostream &log);
+
+    /** Postprocess and write summary.txt (and solution.vtu). */
+    void
+    output_results(std::ostream &log);
+
+    /** solve() then output_results(). */
+    void
+    run(std::ostream &log);
+
+    Scene<dim>                 scene;
+    MixedSpaces<dim>           spaces;
+    EquilibriumReduction       reduction;
+    Postprocessor<dim>         postprocessor;
+    OutputSettings             output;
+    dealii::Triangulation<dim> triangulation;
+    EquilibriumSystem          system;
+
+    dealii::Vector<double> stress;
+    dealii::Vector<double> displacement;
+    std::vector<double>    row_values;
+    /** p = Q s - q per contact row; r = H s - f_H per prescribed row. */
+    std::vector<double> contact_reactions, support_reactions;
+    Summary             summary;
+
+  private:
+    dealii::TimerOutput timer;
+    std::string         parameter_file_name;
+  };
+} // namespace hrcontact
+
+#endif

@@ -1,0 +1,84 @@
+#ifndef hrcontact_scene_h
+#define hrcontact_scene_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <hrcontact/input.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hrcontact
+{
+  /**
+   * What a run computes on: the mesh, the linear elastic material, the loads
+   * and the supports, all read from the parameter file. A scene configures
+   * only what it names: an empty list means "none of these".
+   */
+  template <int dim>
+  class Scene
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /** Build the mesh, refine, distort and rotate it as asked. */
+    void
+    create_mesh(dealii::Triangulation<dim> &triangulation) const;
+
+    /** Compliance E^{-1}: strain from stress (plane strain uses E', nu'). */
+    dealii::SymmetricTensor<2, dim>
+    strain_from_stress(const dealii::SymmetricTensor<2, dim> &sigma) const;
+
+    /** The out-of-plane stress: nu (sxx + syy) in plane strain, else 0. */
+    double
+    out_of_plane_stress(const dealii::SymmetricTensor<2, dim> &sigma) const;
+
+    /** Human-readable description of the 2D assumption ("3D" in 3D). */
+    std::string
+    plane_condition_name() const;
+
+    Constants constants;
+
+    // Geometry
+    std::string  grid_generator;
+    std::string  grid_arguments;
+    unsigned int global_refinements = 0;
+    double       distortion         = 0;
+    double       rotation_degrees   = 0;
+
+    // Material
+    double youngs_modulus = 1;
+    double poisson_ratio  = 0;
+    bool   plane_strain   = true;
+
+    // Loads
+    std::unique_ptr<dealii::FunctionParser<dim>> body_force;
+    std::map<dealii::types::boundary_id,
+             std::unique_ptr<dealii::FunctionParser<dim>>>
+      tractions;
+
+    // Supports
+    struct PrescribedDisplacement
+    {
+      std::vector<unsigned int>                    components;
+      std::unique_ptr<dealii::FunctionParser<dim>> values; // one per component
+    };
+    std::map<dealii::types::boundary_id, PrescribedDisplacement>
+      prescribed_displacements;
+    /** Bilateral "u.n = g" constraints: the Q rows of eq. 38. */
+    std::map<dealii::types::boundary_id,
+             std::unique_ptr<dealii::FunctionParser<dim>>>
+      normal_displacements;
+  };
+} // namespace hrcontact
+
+#endif

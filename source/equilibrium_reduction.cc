@@ -1,0 +1,361 @@
+#include <deal.II/base/exceptions.h>
+
+#include <hrcontact/equilibrium_reduction.h>
+#include <hrcontact/input.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+// Reference BLAS/LAPACK interfaces (column-major), linked through deal.II.
+extern "C"
+{
+  void
+  dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv,
+          int *info);
+  void
+  dtrsm_(const char *side, const char *uplo, const char *transa,
+         const char *diag, const int *m, const int *n, const double *alpha,
+         const double *a, const int *lda, double *b, const int *ldb);
+  void
+  dtrsv_(const char *uplo, const char *trans, const char *diag, const int *n,
+         const double *a, const int *lda, double *x, const int *incx);
+  void
+  dgemm_(const char *transa, const char *transb, const int *m, const int *n,
+         const int *k, const double *alpha, const double *a, const int *lda,
+         const double *b, const int *ldb, const double *beta, double *c,
+         const int *ldc);
+  void
+  dgemv_(const char *trans, const int *m, const int *n, const double *alpha,
+         const double *a, const int *lda, const double *x, const int *incx,
+         const double *beta, double *y, const int *incy);
+  void
+  dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
+  void
+  dpotrs_(const char *uplo, const int *n, const int *nrhs, const double *a,
+          const int *lda, double *b, const int *ldb, int *info);
+}
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  void
+  EquilibriumReduction::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Equilibrium reduction");
+    prm.declare_entry(
+      "Pivot tolerance",
+      "1e-9",
+      Patterns::Double(0, 1e-2),
+      "A pivot of the Gaussian reduction of C^T smaller than this times the "
+      "norm of its row of C counts as zero: C is then rank deficient (a "
+      "mechanism) and the run stops naming the nodes the mode moves.");
+    prm.leave_subsection();
+  }
+
+  void
+  EquilibriumReduction::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Equilibrium reduction");
+    pivot_tolerance = prm.get_double("Pivot tolerance");
+    prm.leave_subsection();
+  }
+
+  void
+  EquilibriumReduction::initialize(const EquilibriumSystem &sys,
+                                   std::ostream            *log)
+  {
+    system = &sys;
+    tau    = sys.n_stress_dofs;
+    n      = sys.free_rows.size();
+
+    if (n > tau)
+      throw InputError(
+        "Equilibrium reduction: there are " + std::to_string(n) +
+        " free displacement rows but only " + std::to_string(tau) +
+        " stress unknowns, so C cannot have full row rank: the body has at "
+        "least " +
+        std::to_string(n - tau) +
+        " zero-energy modes (a mechanism, an unsupported body, or a stress "
+        "space too poor for this mesh; try Stress element = DGQ1).");
+    m = tau - n;
+
+    // A = C^T, tau x n, column-major: column i is free row i of B~.
+    std::vector<double> A(static_cast<std::size_t>(tau) * n, 0.);
+    std::vector<double> row_norm(n, 0.);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const EquilibriumRow &row = sys.rows[sys.free_rows[i]];
+        double *const         col = A.data() + static_cast<std::size_t>(i) * tau;
+        for (const auto &[dof, c] : row.combination)
+          if (c != 0)
+            for (auto it = sys.B.begin(dof); it != sys.B.end(dof); ++it)
+              col[it->column()] += c * it->value();
+        for (unsigned int j = 0; j < tau; ++j)
+          row_norm[i] += col[j] * col[j];
+        row_norm[i] = std::sqrt(row_norm[i]);
+        if (row_norm[i] == 0)
+          throw InputError("Equilibrium reduction: " + sys.describe_row(sys.free_rows[i]) +
+                           " is touched by no cell: a node without stiffness.");
+      }
+
+    // Gaussian reduction with row pivoting of C^T = column choice of C.
+    std::vector<int> ipiv(n);
+    if (n > 0)
+      {
+        const int itau = tau, in = n;
+        int       info = 0;
+        dgetrf_(&itau, &in, A.data(), &itau, ipiv.data(), &info);
+        AssertThrow(info >= 0, ExcMessage("dgetrf: illegal argument"));
+      }
+    perm.resize(tau);
+    std::iota(perm.begin(), perm.end(), 0u);
+    for (unsigned int k = 0; k < n; ++k)
+      std::swap(perm[k], perm[ipiv[k] - 1]);
+    position.resize(tau);
+    for (unsigned int i = 0; i < tau; ++i)
+      position[perm[i]] = i;
+
+    // Rank check: a vanishing pivot is a zero-energy mode of C.
+    std::vector<unsigned int> zero_pivots;
+    for (unsigned int k = 0; k < n; ++k)
+      if (!(std::abs(A[k + static_cast<std::size_t>(k) * tau]) >
+            pivot_tolerance * row_norm[k]))
+        zero_pivots.push_back(k);
+    if (!zero_pivots.empty())
+      {
+        // Null vector y of U (hence of C^T): y_k = 1, y_{>k} = 0,
+        // U[0:k,0:k] y[0:k] = -U[0:k,k]. It is the mode: a displacement of
+        // the free rows that no stress in the space resists.
+        const unsigned int  k = zero_pivots.front();
+        std::vector<double> y(n, 0.);
+        y[k] = 1.;
+        for (unsigned int i = 0; i < k; ++i)
+          y[i] = -A[i + static_cast<std::size_t>(k) * tau];
+        if (k > 0)
+          {
+            const int ik = k, itau = tau, one = 1;
+            dtrsv_("U", "N", "N", &ik, A.data(), &itau, y.data(), &one);
+          }
+        // Nodes ranked by how much the mode moves them.
+        std::vector<std::pair<double, unsigned int>> node_motion;
+        std::vector<double> per_node(sys.node_coordinates.size(), 0.);
+        for (unsigned int i = 0; i < n; ++i)
+          per_node[sys.rows[sys.free_rows[i]].node] += y[i] * y[i];
+        for (unsigned int node = 0; node < per_node.size(); ++node)
+          if (per_node[node] > 0)
+            node_motion.emplace_back(std::sqrt(per_node[node]), node);
+        std::sort(node_motion.rbegin(), node_motion.rend());
+        const double largest = node_motion.empty() ? 1. : node_motion.front().first;
+        std::ostringstream s;
+        s << "Equilibrium reduction: the equilibrium matrix C of the free rows "
+             "is rank deficient ("
+          << zero_pivots.size() << " of " << n
+          << " pivots vanish): the body has a zero-energy mode, i.e. a "
+             "mechanism, an unsupported (floating) body, or a stress space too "
+             "poor for this mesh. Add supports that stop rigid motions, or use "
+             "a richer stress element. First vanishing pivot at "
+          << sys.describe_row(sys.free_rows[k]) << ". The mode moves "
+          << node_motion.size() << " node(s); the largest motions are at:";
+        for (unsigned int i = 0; i < std::min<std::size_t>(4, node_motion.size()); ++i)
+          s << (i ? "," : "") << " " << sys.describe_node(node_motion[i].second)
+            << " [" << std::setprecision(2) << node_motion[i].first / largest
+            << "]";
+        s << ".";
+        throw InputError(s.str());
+      }
+
+    if (log)
+      *log << "  equilibrium reduction: rank(C) = " << n << " of " << n
+           << " free rows, " << tau << " stresses, dim(s0) = " << m
+           << std::endl;
+
+    // Keep L11 \ U (n x n); X = L11^{-T} L21^T (n x m).
+    LU11.assign(static_cast<std::size_t>(n) * n, 0.);
+    for (unsigned int j = 0; j < n; ++j)
+      for (unsigned int i = 0; i < n; ++i)
+        LU11[i + static_cast<std::size_t>(j) * n] =
+          A[i + static_cast<std::size_t>(j) * tau];
+    X.assign(static_cast<std::size_t>(n) * m, 0.);
+    for (unsigned int j = 0; j < m; ++j)
+      for (unsigned int i = 0; i < n; ++i)
+        X[i + static_cast<std::size_t>(j) * n] =
+          A[(n + j) + static_cast<std::size_t>(i) * tau];
+    std::vector<double>().swap(A);
+    if (n > 0 && m > 0)
+      {
+        const int    in = n, im = m;
+        const double one = 1.;
+        dtrsm_("L", "L", "T", "U", &in, &im, &one, LU11.data(), &in, X.data(), &in);
+      }
+
+    // Particular stress t: C1 t1 = f_C, C1 = U^T L11^T.
+    t.reinit(tau);
+    if (n > 0)
+      {
+        std::vector<double> t1(n);
+        for (unsigned int i = 0; i < n; ++i)
+          t1[i] = sys.row_load(sys.rows[sys.free_rows[i]]);
+        const int in = n, one = 1;
+        dtrsv_("U", "T", "N", &in, LU11.data(), &in, t1.data(), &one);
+        dtrsv_("L", "T", "U", &in, LU11.data(), &in, t1.data(), &one);
+        for (unsigned int i = 0; i < n; ++i)
+          t[perm[i]] = t1[i];
+      }
+
+    // M0 = R^T F R = G0 - X^T G1 with G = F R, computed column by column
+    // (F is block diagonal: one small product per cell).
+    std::vector<double> G0(static_cast<std::size_t>(m) * m, 0.);
+    std::vector<double> G1(static_cast<std::size_t>(n) * m, 0.);
+    {
+      std::vector<double> Rcol(tau), Gcol(tau);
+      for (unsigned int j = 0; j < m; ++j)
+        {
+          const double *Xj = X.data() + static_cast<std::size_t>(j) * n;
+          for (unsigned int i = 0; i < n; ++i)
+            Rcol[perm[i]] = -Xj[i];
+          for (unsigned int i = n; i < tau; ++i)
+            Rcol[perm[i]] = (i - n == j) ? 1. : 0.;
+          for (unsigned int c = 0; c < sys.cell_stress_dofs.size(); ++c)
+            {
+              const auto &dofs = sys.cell_stress_dofs[c];
+              const auto &Fc   = sys.cell_flexibility[c];
+              for (unsigned int a = 0; a < dofs.size(); ++a)
+                {
+                  double sum = 0;
+                  for (unsigned int b = 0; b < dofs.size(); ++b)
+                    sum += Fc(a, b) * Rcol[dofs[b]];
+                  Gcol[dofs[a]] = sum;
+                }
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            G1[i + static_cast<std::size_t>(j) * n] = Gcol[perm[i]];
+          for (unsigned int i = n; i < tau; ++i)
+            G0[(i - n) + static_cast<std::size_t>(j) * m] = Gcol[perm[i]];
+        }
+    }
+    if (n > 0 && m > 0)
+      {
+        const int    in = n, im = m;
+        const double minus_one = -1., one = 1.;
+        dgemm_("T", "N", &im, &im, &in, &minus_one, X.data(), &in, G1.data(), &in,
+               &one, G0.data(), &im);
+      }
+    std::vector<double>().swap(G1);
+    // Symmetrise against round-off, then factorise (R^T F R is SPD: F is SPD
+    // and R has full column rank).
+    for (unsigned int j = 0; j < m; ++j)
+      for (unsigned int i = j + 1; i < m; ++i)
+        {
+          const double avg = 0.5 * (G0[i + static_cast<std::size_t>(j) * m] +
+                                    G0[j + static_cast<std::size_t>(i) * m]);
+          G0[i + static_cast<std::size_t>(j) * m] = avg;
+          G0[j + static_cast<std::size_t>(i) * m] = avg;
+        }
+    M0_factor.swap(G0);
+    if (m > 0)
+      {
+        const int im = m;
+        int       info = 0;
+        dpotrf_("L", &im, M0_factor.data(), &im, &info);
+        if (info != 0)
+          throw InputError(
+            "Equilibrium reduction: R^T F R is not positive definite (Cholesky "
+            "failed at column " +
+            std::to_string(info) +
+            "); the flexibility is singular. Check the material parameters.");
+      }
+  }
+
+  void
+  EquilibriumReduction::apply_R(const Vector<double> &s0, Vector<double> &s) const
+  {
+    AssertDimension(s0.size(), m);
+    s.reinit(tau);
+    std::vector<double> xs(n, 0.);
+    if (n > 0 && m > 0)
+      {
+        const int    in = n, im = m, one_i = 1;
+        const double one = 1., zero = 0.;
+        dgemv_("N", &in, &im, &one, X.data(), &in, s0.data(), &one_i, &zero,
+               xs.data(), &one_i);
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      s[perm[i]] = -xs[i];
+    for (unsigned int j = 0; j < m; ++j)
+      s[perm[n + j]] = s0[j];
+  }
+
+  void
+  EquilibriumReduction::solve_bilateral(Vector<double> &s) const
+  {
+    const EquilibriumSystem &sys = *system;
+    // v = -F t + H^T u-hat + Q^T g; rhs = R^T v = v0 - X^T v1.
+    Vector<double> v;
+    sys.multiply_flexibility(t, v);
+    v *= -1.;
+    for (const unsigned int r : sys.prescribed_rows)
+      sys.add_row_transpose(sys.rows[r], sys.rows[r].value, v);
+    for (const unsigned int r : sys.contact_rows)
+      sys.add_row_transpose(sys.rows[r], sys.rows[r].value, v);
+
+    Vector<double>      s0(m);
+    std::vector<double> v1(n);
+    for (unsigned int i = 0; i < n; ++i)
+      v1[i] = v[perm[i]];
+    for (unsigned int j = 0; j < m; ++j)
+      s0[j] = v[perm[n + j]];
+    if (n > 0 && m > 0)
+      {
+        const int    in = n, im = m, one_i = 1;
+        const double minus_one = -1., one = 1.;
+        dgemv_("T", &in, &im, &minus_one, X.data(), &in, v1.data(), &one_i, &one,
+               s0.data(), &one_i);
+      }
+    if (m > 0)
+      {
+        const int im = m, one_i = 1;
+        int       info = 0;
+        dpotrs_("L", &im, &one_i, M0_factor.data(), &im, s0.data(), &im, &info);
+        AssertThrow(info == 0, ExcMessage("dpotrs failed"));
+      }
+    apply_R(s0, s);
+    s += t;
+  }
+
+  std::vector<double>
+  EquilibriumReduction::row_displacements(const Vector<double>      &s,
+                                          const std::vector<double> &contact_w) const
+  {
+    const EquilibriumSystem &sys = *system;
+    AssertDimension(contact_w.size(), sys.contact_rows.size());
+    Vector<double> rhs;
+    sys.multiply_flexibility(s, rhs);
+    for (const unsigned int r : sys.prescribed_rows)
+      sys.add_row_transpose(sys.rows[r], -sys.rows[r].value, rhs);
+    for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
+      sys.add_row_transpose(sys.rows[sys.contact_rows[k]], -contact_w[k], rhs);
+
+    // Eq. 51, second line: C1^T u_C = rhs_1 with C1^T = L11 U.
+    std::vector<double> uC(n);
+    for (unsigned int i = 0; i < n; ++i)
+      uC[i] = rhs[perm[i]];
+    if (n > 0)
+      {
+        const int in = n, one = 1;
+        dtrsv_("L", "N", "U", &in, LU11.data(), &in, uC.data(), &one);
+        dtrsv_("U", "N", "N", &in, LU11.data(), &in, uC.data(), &one);
+      }
+    std::vector<double> values(sys.rows.size(), 0.);
+    for (unsigned int i = 0; i < n; ++i)
+      values[sys.free_rows[i]] = uC[i];
+    for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
+      values[sys.contact_rows[k]] = contact_w[k];
+    for (const unsigned int r : sys.prescribed_rows)
+      values[r] = sys.rows[r].value;
+    return values;
+  }
+} // namespace hrcontact

@@ -1,0 +1,384 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <hrcontact/hr_assembler.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  template <int dim>
+  HRAssembler<dim>::HRAssembler(const Scene<dim>       &scene,
+                                const MixedSpaces<dim> &spaces)
+    : scene(scene)
+    , spaces(spaces)
+  {}
+
+  template <int dim>
+  void
+  HRAssembler<dim>::assemble(EquilibriumSystem &system) const
+  {
+    assemble_blocks(system);
+    classify_rows(system);
+  }
+
+  template <int dim>
+  void
+  HRAssembler<dim>::assemble_blocks(EquilibriumSystem &system) const
+  {
+    const DoFHandler<dim> &dh_u   = spaces.dof_handler_displacement;
+    const DoFHandler<dim> &dh_s   = spaces.dof_handler_stress;
+    const auto            &fe_u   = *spaces.fe_displacement;
+    const auto            &fe_s   = *spaces.fe_stress;
+    constexpr unsigned int n_comp = MixedSpaces<dim>::n_stress_components;
+
+    system.dim                 = dim;
+    system.n_displacement_dofs = dh_u.n_dofs();
+    system.n_stress_dofs       = dh_s.n_dofs();
+
+    // Q1 x DGQ1 products are integrated exactly on parallelograms by 2 Gauss
+    // points per direction; so are the constant-stress patch tests on
+    // general quadrilaterals and hexahedra (cof(J) grad phi is polynomial).
+    const QGauss<dim>     quadrature(2);
+    const QGauss<dim - 1> face_quadrature(2);
+    FEValues<dim>         fv_u(fe_u,
+                       quadrature,
+                       update_gradients | update_values |
+                         update_quadrature_points | update_JxW_values);
+    FEValues<dim>         fv_s(fe_s, quadrature, update_values);
+    FEFaceValues<dim>     fv_face(fe_u,
+                              face_quadrature,
+                              update_values | update_quadrature_points |
+                                update_JxW_values);
+
+    const unsigned int n_u = fe_u.n_dofs_per_cell();
+    const unsigned int n_s = fe_s.n_dofs_per_cell();
+
+    // E^{-1} in the stress basis: K(c, c') = T_c : E^{-1} T_c'.
+    FullMatrix<double> K(n_comp, n_comp);
+    std::vector<SymmetricTensor<2, dim>> T(n_comp);
+    for (unsigned int c = 0; c < n_comp; ++c)
+      T[c] = MixedSpaces<dim>::stress_basis_tensor(c);
+    for (unsigned int c = 0; c < n_comp; ++c)
+      for (unsigned int d = 0; d < n_comp; ++d)
+        K(c, d) = T[c] * scene.strain_from_stress(T[d]);
+
+    DynamicSparsityPattern dsp(dh_u.n_dofs(), dh_s.n_dofs());
+    {
+      std::vector<types::global_dof_index> du(n_u), ds(n_s);
+      auto                                 cs = dh_s.begin_active();
+      for (const auto &cu : dh_u.active_cell_iterators())
+        {
+          cu->get_dof_indices(du);
+          cs->get_dof_indices(ds);
+          for (const auto i : du)
+            for (const auto j : ds)
+              dsp.add(i, j);
+          ++cs;
+        }
+    }
+    system.sparsity.copy_from(dsp);
+    system.B.reinit(system.sparsity);
+    system.load.reinit(dh_u.n_dofs());
+    system.cell_stress_dofs.assign(dh_s.get_triangulation().n_active_cells(),
+                                   {});
+    system.cell_flexibility.assign(dh_s.get_triangulation().n_active_cells(),
+                                   FullMatrix<double>());
+
+    std::vector<types::global_dof_index> du(n_u), ds(n_s);
+    FullMatrix<double>                   Bc(n_u, n_s);
+    Vector<double>                       fc(n_u);
+    Vector<double>                       force(dim);
+    auto                                 cs = dh_s.begin_active();
+    for (const auto &cu : dh_u.active_cell_iterators())
+      {
+        fv_u.reinit(cu);
+        fv_s.reinit(cs);
+        cu->get_dof_indices(du);
+        cs->get_dof_indices(ds);
+
+        FullMatrix<double> Fc(n_s, n_s);
+        Bc = 0;
+        fc = 0;
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          {
+            const double JxW = fv_u.JxW(q);
+            if (!(JxW > 0))
+              {
+                std::ostringstream s;
+                s << "Geometry: the cell with centre (" << cu->center()
+                  << ") is inverted or too distorted (non-positive Jacobian "
+                     "at a quadrature point).";
+                throw InputError(s.str());
+              }
+            for (unsigned int i = 0; i < n_s; ++i)
+              {
+                const unsigned int ci  = fe_s.system_to_component_index(i).first;
+                const double       psi = fv_s.shape_value(i, q);
+                for (unsigned int j = 0; j < n_s; ++j)
+                  {
+                    const unsigned int cj =
+                      fe_s.system_to_component_index(j).first;
+                    Fc(i, j) += psi * fv_s.shape_value(j, q) * K(ci, cj) * JxW;
+                  }
+              }
+            for (unsigned int i = 0; i < n_u; ++i)
+              {
+                const unsigned int a = fe_u.system_to_component_index(i).first;
+                const Tensor<1, dim> grad = fv_u.shape_grad(i, q);
+                // eps(phi_i) : T_c = sum_b sym(e_a (x) grad)_{..}: with T_c
+                // having ones at (p,q) and (q,p).
+                for (unsigned int j = 0; j < n_s; ++j)
+                  {
+                    const unsigned int c = fe_s.system_to_component_index(j).first;
+                    const auto pq = MixedSpaces<dim>::stress_component_indices(c);
+                    double     eps_T = 0;
+                    if (pq.first == pq.second)
+                      eps_T = (a == pq.first) ? grad[a] : 0.;
+                    else
+                      eps_T = (a == pq.first ? grad[pq.second] : 0.) +
+                              (a == pq.second ? grad[pq.first] : 0.);
+                    Bc(i, j) += eps_T * fv_s.shape_value(j, q) * JxW;
+                  }
+              }
+            if (scene.body_force)
+              {
+                scene.body_force->vector_value(fv_u.quadrature_point(q), force);
+                for (unsigned int i = 0; i < n_u; ++i)
+                  {
+                    const unsigned int a = fe_u.system_to_component_index(i).first;
+                    fc(i) += fv_u.shape_value(i, q) * force(a) * JxW;
+                  }
+              }
+          }
+
+        for (const auto f : cu->face_indices())
+          if (cu->face(f)->at_boundary())
+            {
+              const auto t = scene.tractions.find(cu->face(f)->boundary_id());
+              if (t == scene.tractions.end())
+                continue;
+              fv_face.reinit(cu, f);
+              for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                {
+                  t->second->vector_value(fv_face.quadrature_point(q), force);
+                  for (unsigned int i = 0; i < n_u; ++i)
+                    {
+                      const unsigned int a =
+                        fe_u.system_to_component_index(i).first;
+                      fc(i) +=
+                        fv_face.shape_value(i, q) * force(a) * fv_face.JxW(q);
+                    }
+                }
+            }
+
+        for (unsigned int i = 0; i < n_u; ++i)
+          {
+            if (!std::isfinite(fc(i)))
+              {
+                std::ostringstream s;
+                s << "Loads: the body force or a traction is not finite near ("
+                  << cu->center() << ").";
+                throw InputError(s.str());
+              }
+            system.load(du[i]) += fc(i);
+            for (unsigned int j = 0; j < n_s; ++j)
+              if (Bc(i, j) != 0)
+                system.B.add(du[i], ds[j], Bc(i, j));
+          }
+        const unsigned int index       = cu->active_cell_index();
+        system.cell_stress_dofs[index] = ds;
+        system.cell_flexibility[index] = Fc;
+        ++cs;
+      }
+  }
+
+  template <int dim>
+  void
+  HRAssembler<dim>::classify_rows(EquilibriumSystem &system) const
+  {
+    const DoFHandler<dim> &dh_u = spaces.dof_handler_displacement;
+    const auto            &tria = dh_u.get_triangulation();
+
+    // Nodes: the used vertices, numbered in vertex order.
+    std::vector<int>                                 node_of_vertex(tria.n_vertices(), -1);
+    std::vector<std::array<types::global_dof_index, dim>> node_dofs;
+    std::vector<Point<dim>>                          node_points;
+    for (const auto &cell : dh_u.active_cell_iterators())
+      for (const auto v : cell->vertex_indices())
+        if (node_of_vertex[cell->vertex_index(v)] < 0)
+          {
+            node_of_vertex[cell->vertex_index(v)] = node_points.size();
+            std::array<types::global_dof_index, dim> dofs;
+            for (unsigned int d = 0; d < dim; ++d)
+              dofs[d] = cell->vertex_dof_index(v, d);
+            node_dofs.push_back(dofs);
+            node_points.push_back(cell->vertex(v));
+          }
+    const unsigned int n_nodes = node_points.size();
+    system.node_coordinates.assign(n_nodes, {{0., 0., 0.}});
+    for (unsigned int n = 0; n < n_nodes; ++n)
+      for (unsigned int d = 0; d < dim; ++d)
+        system.node_coordinates[n][d] = node_points[n][d];
+
+    // Prescribed components.
+    std::vector<std::array<bool, dim>>   prescribed(n_nodes);
+    std::vector<std::array<double, dim>> prescribed_value(n_nodes);
+    for (auto &p : prescribed)
+      p.fill(false);
+    // Normal constraints: accumulated area-weighted face normals, and the
+    // individual unit face normals to detect corners.
+    std::vector<Tensor<1, dim>>              normal_sum(n_nodes);
+    std::vector<std::vector<Tensor<1, dim>>> face_normals(n_nodes);
+    std::vector<double>                      gap(n_nodes, 0.);
+    std::vector<bool>                        has_normal(n_nodes, false);
+
+    const QGauss<dim - 1> centre(1);
+    FEFaceValues<dim>     fv_face(*spaces.fe_displacement,
+                              centre,
+                              update_normal_vectors | update_JxW_values);
+
+    for (const auto &cell : dh_u.active_cell_iterators())
+      for (const auto f : cell->face_indices())
+        {
+          if (!cell->face(f)->at_boundary())
+            continue;
+          const types::boundary_id id = cell->face(f)->boundary_id();
+
+          const auto pd = scene.prescribed_displacements.find(id);
+          if (pd != scene.prescribed_displacements.end())
+            for (const auto v : cell->face(f)->vertex_indices())
+              {
+                const unsigned int node =
+                  node_of_vertex[cell->face(f)->vertex_index(v)];
+                const Point<dim> &x = node_points[node];
+                for (unsigned int k = 0; k < pd->second.components.size(); ++k)
+                  {
+                    const unsigned int d     = pd->second.components[k];
+                    const double       value = pd->second.values->value(x, k);
+                    if (!std::isfinite(value))
+                      throw InputError(
+                        "Supports/Prescribed displacements: the value for "
+                        "boundary " +
+                        std::to_string(id) + " is not finite at " +
+                        system.describe_node(node) + ".");
+                    if (prescribed[node][d] &&
+                        std::abs(prescribed_value[node][d] - value) >
+                          1e-10 * (1 + std::abs(value)))
+                      throw InputError(
+                        "Supports/Prescribed displacements: two boundaries "
+                        "prescribe different values of component " +
+                        std::string(1, "xyz"[d]) + " at " +
+                        system.describe_node(node) + ".");
+                    prescribed[node][d]       = true;
+                    prescribed_value[node][d] = value;
+                  }
+              }
+
+          const auto nd = scene.normal_displacements.find(id);
+          if (nd != scene.normal_displacements.end())
+            {
+              fv_face.reinit(cell, f);
+              const Tensor<1, dim> n = fv_face.normal_vector(0);
+              for (const auto v : cell->face(f)->vertex_indices())
+                {
+                  const unsigned int node =
+                    node_of_vertex[cell->face(f)->vertex_index(v)];
+                  normal_sum[node] += n * fv_face.JxW(0);
+                  face_normals[node].push_back(n);
+                  gap[node]        = nd->second->value(node_points[node]);
+                  has_normal[node] = true;
+                  if (!std::isfinite(gap[node]))
+                    throw InputError(
+                      "Supports/Normal displacements: the value for boundary " +
+                      std::to_string(id) + " is not finite at " +
+                      system.describe_node(node) + ".");
+                }
+            }
+        }
+
+    system.rows.clear();
+    system.free_rows.clear();
+    system.contact_rows.clear();
+    system.prescribed_rows.clear();
+    auto add_row = [&](const unsigned int    node,
+                       const Tensor<1, dim> &direction,
+                       const RowClass        row_class,
+                       const double          value) {
+      EquilibriumRow row;
+      row.row_class = row_class;
+      row.node      = node;
+      row.value     = value;
+      for (unsigned int d = 0; d < dim; ++d)
+        row.combination.emplace_back(node_dofs[node][d], direction[d]);
+      const unsigned int r = system.rows.size();
+      system.rows.push_back(row);
+      (row_class == RowClass::free      ? system.free_rows :
+       row_class == RowClass::contact   ? system.contact_rows :
+                                          system.prescribed_rows)
+        .push_back(r);
+    };
+
+    for (unsigned int node = 0; node < n_nodes; ++node)
+      {
+        std::vector<Tensor<1, dim>> taken; // directions already used
+        for (unsigned int d = 0; d < dim; ++d)
+          if (prescribed[node][d])
+            {
+              Tensor<1, dim> e;
+              e[d] = 1.;
+              add_row(node, e, RowClass::prescribed, prescribed_value[node][d]);
+              taken.push_back(e);
+            }
+        if (has_normal[node])
+          {
+            const Tensor<1, dim> n = normal_sum[node] / normal_sum[node].norm();
+            for (const auto &nf : face_normals[node])
+              if (nf * n < std::cos(numbers::PI / 4))
+                throw InputError(
+                  "Supports/Normal displacements: " + system.describe_node(node) +
+                  " is a corner between faces whose normals differ by more "
+                  "than 45 degrees; one normal cannot represent it. Prescribe "
+                  "the displacement components there instead.");
+            for (const auto &e : taken)
+              if (std::abs(e * n) > 1e-8)
+                throw InputError(
+                  "Supports: " + system.describe_node(node) +
+                  " has a prescribed displacement component that is not "
+                  "orthogonal to its normal constraint; the two constraints "
+                  "conflict. Remove one of them at this node.");
+            add_row(node, n, RowClass::contact, gap[node]);
+            taken.push_back(n);
+          }
+        // The free rows span the orthogonal complement of what is taken
+        // (Gram-Schmidt on the axes, in axis order).
+        for (unsigned int d = 0; d < dim && taken.size() < dim; ++d)
+          {
+            Tensor<1, dim> t;
+            t[d] = 1.;
+            for (const auto &e : taken)
+              t -= (t * e) * e;
+            if (t.norm() < 0.5)
+              continue;
+            t /= t.norm();
+            add_row(node, t, RowClass::free, 0.);
+            taken.push_back(t);
+          }
+        AssertThrow(taken.size() == dim, ExcInternalError());
+      }
+    AssertThrow(system.rows.size() == system.n_displacement_dofs,
+                ExcInternalError());
+  }
+
+  template class HRAssembler<2>;
+  template class HRAssembler<3>;
+} // namespace hrcontact

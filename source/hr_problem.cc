@@ -1,0 +1,224 @@
+#include <deal.II/base/utilities.h>
+
+#include <hrcontact/hr_assembler.h>
+#include <hrcontact/hr_problem.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  void
+  OutputSettings::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Output directory",
+                      "output",
+                      Patterns::Anything(),
+                      "Directory for summary.txt and solution.vtu, relative "
+                      "to the working directory; created if missing.");
+    prm.declare_entry("Write solution",
+                      "true",
+                      Patterns::Bool(),
+                      "Write solution.vtu (displacement, stress tensor, "
+                      "principal stresses, von Mises) for ParaView.");
+    prm.declare_entry("Print timing",
+                      "true",
+                      Patterns::Bool(),
+                      "Print a table of wall times at the end of the run "
+                      "(tests switch it off to keep their output "
+                      "reproducible).");
+    prm.leave_subsection();
+  }
+
+  void
+  OutputSettings::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    directory    = prm.get("Output directory");
+    write_vtu    = prm.get_bool("Write solution");
+    print_timing = prm.get_bool("Print timing");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  HRProblem<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    Scene<dim>::declare_parameters(prm);
+    MixedSpaces<dim>::declare_parameters(prm);
+    EquilibriumReduction::declare_parameters(prm);
+    Postprocessor<dim>::declare_parameters(prm);
+    OutputSettings::declare_parameters(prm);
+  }
+
+  template <int dim>
+  HRProblem<dim>::HRProblem(ParameterHandler &prm)
+    : timer(std::cout, TimerOutput::never, TimerOutput::wall_times)
+  {
+    scene.parse_parameters(prm);
+    spaces.parse_parameters(prm);
+    reduction.parse_parameters(prm);
+    postprocessor.parse_parameters(prm, scene.constants);
+    output.parse_parameters(prm);
+  }
+
+  template <int dim>
+  void
+  HRProblem<dim>::solve(std::ostream &log)
+  {
+    {
+      TimerOutput::Scope t(timer, "mesh and dofs");
+      scene.create_mesh(triangulation);
+      spaces.setup(triangulation);
+    }
+    log << "  " << dim << "D (" << scene.plane_condition_name()
+        << "), stress element " << spaces.stress_element_name << '\n'
+        << "  mesh: " << triangulation.n_active_cells() << " cells, "
+        << triangulation.n_used_vertices() << " nodes\n"
+        << "  dofs: " << spaces.dof_handler_displacement.n_dofs()
+        << " displacement, " << spaces.dof_handler_stress.n_dofs()
+        << " stress" << std::endl;
+
+    {
+      TimerOutput::Scope t(timer, "assembly");
+      HRAssembler<dim>(scene, spaces).assemble(system);
+    }
+    log << "  rows: " << system.free_rows.size() << " free (C), "
+        << system.contact_rows.size() << " normal (Q), "
+        << system.prescribed_rows.size() << " prescribed (H)" << std::endl;
+
+    {
+      TimerOutput::Scope t(timer, "equilibrium reduction");
+      reduction.initialize(system, &log);
+    }
+    {
+      TimerOutput::Scope t(timer, "solve");
+      reduction.solve_bilateral(stress);
+      std::vector<double> w(system.contact_rows.size());
+      for (unsigned int k = 0; k < w.size(); ++k)
+        w[k] = system.rows[system.contact_rows[k]].value;
+      row_values = reduction.row_displacements(stress, w);
+      system.displacements_from_row_values(row_values, displacement);
+    }
+
+    contact_reactions.clear();
+    for (const unsigned int r : system.contact_rows)
+      contact_reactions.push_back(system.row_times(system.rows[r], stress) -
+                                  system.row_load(system.rows[r]));
+    support_reactions.clear();
+    for (const unsigned int r : system.prescribed_rows)
+      support_reactions.push_back(system.row_times(system.rows[r], stress) -
+                                  system.row_load(system.rows[r]));
+
+    for (const double v : stress)
+      if (!std::isfinite(v))
+        throw InputError("Solve: the stresses are not finite; the problem is "
+                         "singular or badly scaled.");
+  }
+
+  template <int dim>
+  void
+  HRProblem<dim>::output_results(std::ostream &log)
+  {
+    TimerOutput::Scope t(timer, "postprocess and output");
+    summary = Summary();
+    summary.add("dimension", dim);
+    summary.add("plane_condition", scene.plane_condition_name());
+    summary.add("stress_element", spaces.stress_element_name);
+    summary.add("cells", triangulation.n_active_cells());
+    summary.add("displacement_dofs", system.n_displacement_dofs);
+    summary.add("stress_dofs", system.n_stress_dofs);
+    summary.add("free_rows", system.free_rows.size());
+    summary.add("normal_rows", system.contact_rows.size());
+    summary.add("prescribed_rows", system.prescribed_rows.size());
+    summary.add("self_equilibrated_stresses", reduction.n_self_equilibrated());
+    summary.add("iterations", 0);
+    summary.add("converged", "true");
+
+    // Global balance: the reactions (forces the supports exert on the body)
+    // and the applied loads sum to zero to round-off.
+    std::vector<double> load(dim, 0.), reaction(dim, 0.);
+    // The rows of a node are an orthonormal basis: sum_r (f.c_r) c_r = f.
+    for (const auto &row : system.rows)
+      {
+        const double f_r = system.row_load(row);
+        for (unsigned int d = 0; d < dim; ++d)
+          load[d] += f_r * row.combination[d].second;
+      }
+    auto add_reaction = [&](const unsigned int r, const double value) {
+      for (unsigned int d = 0; d < dim; ++d)
+        reaction[d] += value * system.rows[r].combination[d].second;
+    };
+    for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
+      add_reaction(system.contact_rows[k], contact_reactions[k]);
+    for (unsigned int k = 0; k < system.prescribed_rows.size(); ++k)
+      add_reaction(system.prescribed_rows[k], support_reactions[k]);
+    double imbalance = 0, scale = 0;
+    const char *xyz = "xyz";
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        summary.add(std::string("total_load_") + xyz[d], load[d]);
+        summary.add(std::string("total_reaction_") + xyz[d], reaction[d]);
+        imbalance = std::max(imbalance, std::abs(load[d] + reaction[d]));
+        scale     = std::max({scale, std::abs(load[d]), std::abs(reaction[d])});
+      }
+    summary.add("equilibrium_imbalance", scale > 0 ? imbalance / scale : imbalance);
+    double max_p = 0;
+    for (const double p : contact_reactions)
+      max_p = std::max(max_p, std::abs(p));
+    summary.add("max_abs_p_n", max_p);
+    double max_u = 0;
+    for (unsigned int i = 0; i < displacement.size(); i += 1)
+      max_u = std::max(max_u, std::abs(displacement[i]));
+    summary.add("max_abs_displacement_component", max_u);
+
+    log << "  total load     (";
+    for (unsigned int d = 0; d < dim; ++d)
+      log << (d ? ", " : "") << std::setprecision(6) << load[d];
+    log << ")\n  total reaction (";
+    for (unsigned int d = 0; d < dim; ++d)
+      log << (d ? ", " : "") << std::setprecision(6) << reaction[d];
+    log << ")" << std::endl;
+
+    postprocessor.evaluate(spaces, scene, displacement, stress, summary, log);
+
+    std::filesystem::create_directories(output.directory);
+    if (output.write_vtu)
+      postprocessor.write_vtu(spaces,
+                              scene,
+                              displacement,
+                              stress,
+                              output.directory + "/solution.vtu");
+    summary.add("wall_time",
+                timer.get_summary_data(TimerOutput::total_wall_time).empty() ?
+                  0. :
+                  [this] {
+                    double sum = 0;
+                    for (const auto &[k, v] :
+                         timer.get_summary_data(TimerOutput::total_wall_time))
+                      sum += v;
+                    return sum;
+                  }());
+    summary.write(output.directory + "/summary.txt");
+    log << "  results in " << output.directory << "/ (summary.txt"
+        << (output.write_vtu ? ", solution.vtu" : "") << ")" << std::endl;
+  }
+
+  template <int dim>
+  void
+  HRProblem<dim>::run(std::ostream &log)
+  {
+    solve(log);
+    output_results(log);
+    if (output.print_timing)
+      timer.print_summary();
+  }
+
+  template class HRProblem<2>;
+  template class HRProblem<3>;
+} // namespace hrcontact

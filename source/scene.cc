@@ -1,0 +1,307 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <hrcontact/scene.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  Scene<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Constants",
+      "",
+      Patterns::Anything(),
+      "Named constants for use in every expression of this file, as a comma "
+      "separated list 'name = expression'; later constants may use earlier "
+      "ones, e.g. 'L = 10, D = 1, I = D^3/12'.");
+
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry(
+        "Grid generator",
+        "hyper_cube",
+        Patterns::Anything(),
+        "Name of a deal.II GridGenerator function, e.g. hyper_cube, "
+        "subdivided_hyper_rectangle, hyper_shell. Boundary ids are those the "
+        "generator assigns (use colorize = true for a rectangle: 0 left, "
+        "1 right, 2 bottom, 3 top, in 3D 4 back, 5 front).");
+      prm.declare_entry(
+        "Grid arguments",
+        "0 : 1 : true",
+        Patterns::Anything(),
+        "Arguments of the grid generator, separated by ':' in the order of "
+        "its C++ signature, e.g. for subdivided_hyper_rectangle "
+        "'8, 2 : 0, 0 : 4, 1 : true' (subdivisions : corner : opposite corner "
+        ": colorize).");
+      prm.declare_entry("Global refinements",
+                        "0",
+                        Patterns::Integer(0, 12),
+                        "Number of uniform refinements of the generated grid.");
+      prm.declare_entry(
+        "Distortion",
+        "0",
+        Patterns::Double(0, 0.4),
+        "Move every interior vertex randomly by up to this fraction of the "
+        "adjacent cells' size (reproducible seed; the boundary stays put). "
+        "Used for patch tests on distorted meshes.");
+      prm.declare_entry(
+        "Rotation angle",
+        "0",
+        Patterns::Double(),
+        "Rotate the whole mesh about the origin (about the z axis in 3D) by "
+        "this angle in degrees, after refinement and distortion.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry("Young's modulus",
+                        "1",
+                        Patterns::Anything(),
+                        "Young's modulus E (an expression of constants); > 0.");
+      prm.declare_entry("Poisson's ratio",
+                        "0.3",
+                        Patterns::Anything(),
+                        "Poisson's ratio nu (an expression of constants); in "
+                        "(-1, 0.5), and below 0.5 in 3D and plane strain.");
+      prm.declare_entry(
+        "Plane condition",
+        "plane strain",
+        Patterns::Selection("plane strain|plane stress"),
+        "2D only: plane strain (eps_zz = 0, reactions per unit thickness) or "
+        "plane stress (sigma_zz = 0).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Loads");
+    {
+      prm.declare_entry("Body force",
+                        "",
+                        Patterns::Anything(),
+                        "Body force per unit volume, one expression per "
+                        "component separated by ';', in x, y (, z) and the "
+                        "constants. Empty: none.");
+      prm.declare_entry(
+        "Tractions",
+        "",
+        Patterns::Anything(),
+        "Surface tractions (force per unit area, global components) per "
+        "boundary id: 'id: tx; ty [; tz]', entries separated by '|', e.g. "
+        "'1: 0; -100*x | 3: 50; 0'. Empty: none.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Supports");
+    {
+      prm.declare_entry(
+        "Prescribed displacements",
+        "",
+        Patterns::Anything(),
+        "Prescribed displacement components (the H rows) per boundary id: "
+        "'id [components]: values', entries separated by '|'. Components are "
+        "letters x, y, z (all if omitted), with one expression per named "
+        "component, e.g. '0: 0; 0 | 2 y: -1e-3'. Where two ids meet, their "
+        "values must agree.");
+      prm.declare_entry(
+        "Normal displacements",
+        "",
+        Patterns::Anything(),
+        "Bilateral constraints u.n = g (the Q rows, eq. 38) per boundary id: "
+        "'id: g', entries separated by '|'. n is the outward unit normal of "
+        "the body at each boundary node (face normals averaged); the node's "
+        "rows are rotated to (n, tangents) and the tangential ones stay free. "
+        "A component prescribed at the same node must be orthogonal to n.");
+    }
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    constants = parse_constants(prm.get("Constants"), "Constants");
+
+    prm.enter_subsection("Geometry");
+    {
+      grid_generator     = Utilities::trim(prm.get("Grid generator"));
+      grid_arguments     = prm.get("Grid arguments");
+      global_refinements = prm.get_integer("Global refinements");
+      distortion         = prm.get_double("Distortion");
+      rotation_degrees   = prm.get_double("Rotation angle");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      youngs_modulus = evaluate_constant_expression(prm.get("Young's modulus"),
+                                                    constants,
+                                                    "Material/Young's modulus");
+      poisson_ratio  = evaluate_constant_expression(prm.get("Poisson's ratio"),
+                                                   constants,
+                                                   "Material/Poisson's ratio");
+      plane_strain   = (prm.get("Plane condition") == "plane strain");
+    }
+    prm.leave_subsection();
+    if (!(youngs_modulus > 0))
+      throw InputError("Material/Young's modulus must be positive (got " +
+                       std::to_string(youngs_modulus) + ").");
+    const bool incompressible_limit_matters = (dim == 3 || plane_strain);
+    if (!(poisson_ratio > -1) ||
+        (incompressible_limit_matters ? !(poisson_ratio < 0.5) :
+                                        !(poisson_ratio <= 0.5)))
+      throw InputError("Material/Poisson's ratio " +
+                       std::to_string(poisson_ratio) +
+                       " is outside (-1, 0.5): the compliance would not be "
+                       "positive definite.");
+
+    prm.enter_subsection("Loads");
+    {
+      const std::string b = prm.get("Body force");
+      if (!Utilities::trim(b).empty())
+        body_force = make_function<dim>(b, dim, constants, "Loads/Body force");
+      for (const BoundaryEntry &e :
+           parse_boundary_list(prm.get("Tractions"), dim, false, "Loads/Tractions"))
+        tractions[e.boundary_id] =
+          make_function<dim>(e.expressions,
+                             dim,
+                             constants,
+                             "Loads/Tractions, boundary " +
+                               std::to_string(e.boundary_id));
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Supports");
+    {
+      for (const BoundaryEntry &e :
+           parse_boundary_list(prm.get("Prescribed displacements"),
+                               dim,
+                               true,
+                               "Supports/Prescribed displacements"))
+        {
+          PrescribedDisplacement &pd = prescribed_displacements[e.boundary_id];
+          pd.components              = e.components;
+          pd.values                  = make_function<dim>(
+            e.expressions,
+            e.components.size(),
+            constants,
+            "Supports/Prescribed displacements, boundary " +
+              std::to_string(e.boundary_id));
+        }
+      for (const BoundaryEntry &e :
+           parse_boundary_list(prm.get("Normal displacements"),
+                               dim,
+                               false,
+                               "Supports/Normal displacements"))
+        normal_displacements[e.boundary_id] =
+          make_function<dim>(e.expressions,
+                             1,
+                             constants,
+                             "Supports/Normal displacements, boundary " +
+                               std::to_string(e.boundary_id));
+    }
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::create_mesh(Triangulation<dim> &triangulation) const
+  {
+    try
+      {
+        GridGenerator::generate_from_name_and_arguments(triangulation,
+                                                        grid_generator,
+                                                        grid_arguments);
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream s;
+        e.print_info(s);
+        throw InputError("Geometry: cannot create the grid '" + grid_generator +
+                         "' from the arguments '" + grid_arguments +
+                         "': " + Utilities::trim(s.str()));
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError("Geometry: cannot create the grid '" + grid_generator +
+                         "' from the arguments '" + grid_arguments +
+                         "': " + e.what());
+      }
+    if (triangulation.n_active_cells() == 0)
+      throw InputError("Geometry: the grid has no cells.");
+
+    triangulation.refine_global(global_refinements);
+
+    if (distortion > 0)
+      GridTools::distort_random(distortion, triangulation, true, 20261121);
+
+    if (rotation_degrees != 0)
+      {
+        const double angle = rotation_degrees * numbers::PI / 180.;
+        const double c = std::cos(angle), s = std::sin(angle);
+        GridTools::transform(
+          [c, s](const Point<dim> &p) {
+            Point<dim> q = p;
+            q[0]         = c * p[0] - s * p[1];
+            q[1]         = s * p[0] + c * p[1];
+            return q;
+          },
+          triangulation);
+      }
+
+    // Inverted or degenerate cells (e.g. a rectangle given with its corners
+    // swapped) would give a flexibility of the wrong sign: refuse them here.
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (!(cell->measure() > 0))
+        {
+          std::ostringstream s;
+          s << "Geometry: the cell with centre (" << cell->center()
+            << ") has non-positive measure " << cell->measure()
+            << ": the grid arguments describe an impossible (inverted or "
+               "degenerate) geometry.";
+          throw InputError(s.str());
+        }
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  Scene<dim>::strain_from_stress(const SymmetricTensor<2, dim> &sigma) const
+  {
+    double E = youngs_modulus, nu = poisson_ratio;
+    if (dim == 2 && plane_strain)
+      {
+        E  = youngs_modulus / (1 - poisson_ratio * poisson_ratio);
+        nu = poisson_ratio / (1 - poisson_ratio);
+      }
+    return (1 + nu) / E * sigma -
+           nu / E * trace(sigma) * unit_symmetric_tensor<dim>();
+  }
+
+  template <int dim>
+  double
+  Scene<dim>::out_of_plane_stress(const SymmetricTensor<2, dim> &sigma) const
+  {
+    return (dim == 2 && plane_strain) ? poisson_ratio * trace(sigma) : 0.;
+  }
+
+  template <int dim>
+  std::string
+  Scene<dim>::plane_condition_name() const
+  {
+    if (dim == 3)
+      return "3D";
+    return plane_strain ? "plane strain" : "plane stress";
+  }
+
+  template class Scene<2>;
+  template class Scene<3>;
+} // namespace hrcontact
