@@ -349,15 +349,27 @@ namespace hrcontact
                   " is a corner between faces whose normals differ by more "
                   "than 45 degrees; one normal cannot represent it. Prescribe "
                   "the displacement components there instead.");
+            // Split n into its part along the prescribed axes and the rest:
+            // if n lies in their span the prescribed values already fix
+            // u.n (the H rows win, no Q row); if n is orthogonal to them the
+            // two coexist; anything in between is a conflict.
+            Tensor<1, dim> n_rest = n;
             for (const auto &e : taken)
-              if (std::abs(e * n) > 1e-8)
-                throw InputError(
-                  "Supports: " + system.describe_node(node) +
-                  " has a prescribed displacement component that is not "
-                  "orthogonal to its normal constraint; the two constraints "
-                  "conflict. Remove one of them at this node.");
-            add_row(node, n, RowClass::contact, gap[node]);
-            taken.push_back(n);
+              n_rest -= (n * e) * e;
+            const bool orthogonal = (n_rest.norm() > 1 - 1e-8);
+            const bool implied    = (n_rest.norm() < 1e-8);
+            if (!orthogonal && !implied)
+              throw InputError(
+                "Supports: " + system.describe_node(node) +
+                " has prescribed displacement components that neither contain "
+                "nor are orthogonal to its normal constraint; the two "
+                "constraints conflict. Prescribe all components there or none "
+                "along the normal.");
+            if (orthogonal)
+              {
+                add_row(node, n, RowClass::contact, gap[node]);
+                taken.push_back(n);
+              }
           }
         // The free rows span the orthogonal complement of what is taken
         // (Gram-Schmidt on the axes, in axis order).

@@ -120,7 +120,7 @@ namespace hrcontact
         "'id: g', entries separated by '|'. n is the outward unit normal of "
         "the body at each boundary node (face normals averaged); the node's "
         "rows are rotated to (n, tangents) and the tangential ones stay free. "
-        "A component prescribed at the same node must be orthogonal to n.");
+        "Where a node also has prescribed components, they must either include all of n (then the prescribed values win) or be orthogonal to n.");
     }
     prm.leave_subsection();
   }
