@@ -76,8 +76,8 @@ namespace hrcontact
       scene.create_mesh(triangulation);
       spaces.setup(triangulation);
     }
-    log << "  " << dim << "D (" << scene.plane_condition_name()
-        << "), stress element " << spaces.stress_element_name << '\n'
+    log << "  " << (dim == 2 ? "2D (" + scene.plane_condition_name() + ")" : "3D")
+        << ", stress element " << spaces.stress_element_name << '\n'
         << "  mesh: " << triangulation.n_active_cells() << " cells, "
         << triangulation.n_used_vertices() << " nodes\n"
         << "  dofs: " << spaces.dof_handler_displacement.n_dofs()
@@ -142,15 +142,20 @@ namespace hrcontact
 
     // Global balance: the reactions (forces the supports exert on the body)
     // and the applied loads sum to zero to round-off.
+    // Scale: the largest nodal force involved, so that a self-balanced
+    // problem (zero net load) is judged against its reactions.
     std::vector<double> load(dim, 0.), reaction(dim, 0.);
+    double              scale = 0;
     // The rows of a node are an orthonormal basis: sum_r (f.c_r) c_r = f.
     for (const auto &row : system.rows)
       {
         const double f_r = system.row_load(row);
+        scale            = std::max(scale, std::abs(f_r));
         for (unsigned int d = 0; d < dim; ++d)
           load[d] += f_r * row.combination[d].second;
       }
     auto add_reaction = [&](const unsigned int r, const double value) {
+      scale = std::max(scale, std::abs(value));
       for (unsigned int d = 0; d < dim; ++d)
         reaction[d] += value * system.rows[r].combination[d].second;
     };
@@ -158,14 +163,13 @@ namespace hrcontact
       add_reaction(system.contact_rows[k], contact_reactions[k]);
     for (unsigned int k = 0; k < system.prescribed_rows.size(); ++k)
       add_reaction(system.prescribed_rows[k], support_reactions[k]);
-    double imbalance = 0, scale = 0;
+    double imbalance = 0;
     const char *xyz = "xyz";
     for (unsigned int d = 0; d < dim; ++d)
       {
         summary.add(std::string("total_load_") + xyz[d], load[d]);
         summary.add(std::string("total_reaction_") + xyz[d], reaction[d]);
         imbalance = std::max(imbalance, std::abs(load[d] + reaction[d]));
-        scale     = std::max({scale, std::abs(load[d]), std::abs(reaction[d])});
       }
     summary.add("equilibrium_imbalance", scale > 0 ? imbalance / scale : imbalance);
     double max_p = 0;

@@ -7,6 +7,7 @@
 #include <hrcontact/input.h>
 
 #include <cmath>
+#include <iostream>
 #include <set>
 #include <sstream>
 
@@ -107,6 +108,18 @@ namespace hrcontact
 
     const std::string variables = (dim == 1 ? "x" : dim == 2 ? "x,y" : "x,y,z");
     auto              f         = std::make_unique<FunctionParser<dim>>(n_components);
+    // deal.II prints muparser's raw diagnostic to std::cerr before it
+    // throws; keep it out of the user's console, our message says it better.
+    std::ostringstream       muparser_noise;
+    std::streambuf    *const cerr_buffer = std::cerr.rdbuf(muparser_noise.rdbuf());
+    struct RestoreCerr
+    {
+      std::streambuf *buffer;
+      ~RestoreCerr()
+      {
+        std::cerr.rdbuf(buffer);
+      }
+    } restore{cerr_buffer};
     try
       {
         f->initialize(variables, pieces, constants);

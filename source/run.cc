@@ -5,6 +5,7 @@
 #include <hrcontact/input.h>
 #include <hrcontact/run.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -62,7 +63,8 @@ namespace hrcontact
         ParameterHandler prm;
         declare_all_parameters(prm);
         read_parameter_file(prm, file);
-        log << "hrcontact: " << file << std::endl;
+        log << "hrcontact: " << std::filesystem::path(file).filename().string()
+            << std::endl;
         if (prm.get_integer("Dimension") == 2)
           run_dimension<2>(prm, log);
         else

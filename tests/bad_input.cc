@@ -1,0 +1,35 @@
+// Bad input ends with one clear message naming the cause, a non-zero exit
+// code and no result file. Runs what the executable runs on each file of
+// tests/input/ and prints the exit code and the message (the expected
+// output); the CTest entries cli/exit-code-* check the real executable.
+
+#include <filesystem>
+
+#include "tests.h"
+
+int
+main()
+{
+  const std::string dir = std::string(SOURCE_DIR) + "/input/";
+  for (const std::string name : {"unknown-entry",
+                                 "malformed-expression",
+                                 "wrong-component-count",
+                                 "floating-body",
+                                 "poor-stress-space",
+                                 "impossible-geometry",
+                                 "conflicting-supports",
+                                 "incompressible",
+                                 "no-such-file"})
+    {
+      std::filesystem::remove_all("should-not-exist");
+      std::ostringstream log, err;
+      const int code = hrcontact::run_parameter_file(dir + name + ".prm", log, err);
+      std::string message = err.str();
+      for (std::size_t p; (p = message.find(dir)) != std::string::npos;)
+        message.replace(p, dir.size(), "<tests>/input/");
+      std::cout << name << ": exit code " << code << "\n  " << message
+                << "  result files written: "
+                << (std::filesystem::exists("should-not-exist") ? "YES" : "no")
+                << std::endl;
+    }
+}
