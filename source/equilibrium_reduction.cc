@@ -4,8 +4,8 @@
 #include <hrcontact/input.h>
 
 #include <algorithm>
-#include <iomanip>
 #include <cmath>
+#include <iomanip>
 #include <numeric>
 #include <sstream>
 
@@ -13,29 +13,70 @@
 extern "C"
 {
   void
-  dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv,
-          int *info);
+  dgetrf_(const int *m,
+          const int *n,
+          double    *a,
+          const int *lda,
+          int       *ipiv,
+          int       *info);
   void
-  dtrsm_(const char *side, const char *uplo, const char *transa,
-         const char *diag, const int *m, const int *n, const double *alpha,
-         const double *a, const int *lda, double *b, const int *ldb);
+  dtrsm_(const char   *side,
+         const char   *uplo,
+         const char   *transa,
+         const char   *diag,
+         const int    *m,
+         const int    *n,
+         const double *alpha,
+         const double *a,
+         const int    *lda,
+         double       *b,
+         const int    *ldb);
   void
-  dtrsv_(const char *uplo, const char *trans, const char *diag, const int *n,
-         const double *a, const int *lda, double *x, const int *incx);
+  dtrsv_(const char   *uplo,
+         const char   *trans,
+         const char   *diag,
+         const int    *n,
+         const double *a,
+         const int    *lda,
+         double       *x,
+         const int    *incx);
   void
-  dgemm_(const char *transa, const char *transb, const int *m, const int *n,
-         const int *k, const double *alpha, const double *a, const int *lda,
-         const double *b, const int *ldb, const double *beta, double *c,
-         const int *ldc);
+  dgemm_(const char   *transa,
+         const char   *transb,
+         const int    *m,
+         const int    *n,
+         const int    *k,
+         const double *alpha,
+         const double *a,
+         const int    *lda,
+         const double *b,
+         const int    *ldb,
+         const double *beta,
+         double       *c,
+         const int    *ldc);
   void
-  dgemv_(const char *trans, const int *m, const int *n, const double *alpha,
-         const double *a, const int *lda, const double *x, const int *incx,
-         const double *beta, double *y, const int *incy);
+  dgemv_(const char   *trans,
+         const int    *m,
+         const int    *n,
+         const double *alpha,
+         const double *a,
+         const int    *lda,
+         const double *x,
+         const int    *incx,
+         const double *beta,
+         double       *y,
+         const int    *incy);
   void
   dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
   void
-  dpotrs_(const char *uplo, const int *n, const int *nrhs, const double *a,
-          const int *lda, double *b, const int *ldb, int *info);
+  dpotrs_(const char   *uplo,
+          const int    *n,
+          const int    *nrhs,
+          const double *a,
+          const int    *lda,
+          double       *b,
+          const int    *ldb,
+          int          *info);
 }
 
 namespace hrcontact
@@ -89,7 +130,7 @@ namespace hrcontact
     for (unsigned int i = 0; i < n; ++i)
       {
         const EquilibriumRow &row = sys.rows[sys.free_rows[i]];
-        double *const         col = A.data() + static_cast<std::size_t>(i) * tau;
+        double *const col = A.data() + static_cast<std::size_t>(i) * tau;
         for (const auto &[dof, c] : row.combination)
           if (c != 0)
             for (auto it = sys.B.begin(dof); it != sys.B.end(dof); ++it)
@@ -98,8 +139,9 @@ namespace hrcontact
           row_norm[i] += col[j] * col[j];
         row_norm[i] = std::sqrt(row_norm[i]);
         if (row_norm[i] == 0)
-          throw InputError("Equilibrium reduction: " + sys.describe_row(sys.free_rows[i]) +
-                           " is touched by no cell: a node without stiffness.");
+          throw InputError(
+            "Equilibrium reduction: " + sys.describe_row(sys.free_rows[i]) +
+            " is touched by no cell: a node without stiffness.");
       }
 
     // Gaussian reduction with row pivoting of C^T = column choice of C.
@@ -149,7 +191,8 @@ namespace hrcontact
           if (per_node[node] > 0)
             node_motion.emplace_back(std::sqrt(per_node[node]), node);
         std::sort(node_motion.rbegin(), node_motion.rend());
-        const double largest = node_motion.empty() ? 1. : node_motion.front().first;
+        const double largest =
+          node_motion.empty() ? 1. : node_motion.front().first;
         std::ostringstream s;
         s << "Equilibrium reduction: the equilibrium matrix C of the free rows "
              "is rank deficient ("
@@ -160,7 +203,9 @@ namespace hrcontact
              "a richer stress element. First vanishing pivot at "
           << sys.describe_row(sys.free_rows[k]) << ". The mode moves "
           << node_motion.size() << " node(s); the largest motions are at:";
-        for (unsigned int i = 0; i < std::min<std::size_t>(4, node_motion.size()); ++i)
+        for (unsigned int i = 0;
+             i < std::min<std::size_t>(4, node_motion.size());
+             ++i)
           s << (i ? "," : "") << " " << sys.describe_node(node_motion[i].second)
             << " [" << std::setprecision(2) << node_motion[i].first / largest
             << "]";
@@ -189,7 +234,8 @@ namespace hrcontact
       {
         const int    in = n, im = m;
         const double one = 1.;
-        dtrsm_("L", "L", "T", "U", &in, &im, &one, LU11.data(), &in, X.data(), &in);
+        dtrsm_(
+          "L", "L", "T", "U", &in, &im, &one, LU11.data(), &in, X.data(), &in);
       }
 
     // Particular stress t: C1 t1 = f_C, C1 = U^T L11^T.
@@ -241,8 +287,19 @@ namespace hrcontact
       {
         const int    in = n, im = m;
         const double minus_one = -1., one = 1.;
-        dgemm_("T", "N", &im, &im, &in, &minus_one, X.data(), &in, G1.data(), &in,
-               &one, G0.data(), &im);
+        dgemm_("T",
+               "N",
+               &im,
+               &im,
+               &in,
+               &minus_one,
+               X.data(),
+               &in,
+               G1.data(),
+               &in,
+               &one,
+               G0.data(),
+               &im);
       }
     std::vector<double>().swap(G1);
     // Symmetrise against round-off, then factorise (R^T F R is SPD: F is SPD
@@ -258,7 +315,7 @@ namespace hrcontact
     M0_factor.swap(G0);
     if (m > 0)
       {
-        const int im = m;
+        const int im   = m;
         int       info = 0;
         dpotrf_("L", &im, M0_factor.data(), &im, &info);
         if (info != 0)
@@ -271,7 +328,8 @@ namespace hrcontact
   }
 
   void
-  EquilibriumReduction::apply_R(const Vector<double> &s0, Vector<double> &s) const
+  EquilibriumReduction::apply_R(const Vector<double> &s0,
+                                Vector<double>       &s) const
   {
     AssertDimension(s0.size(), m);
     s.reinit(tau);
@@ -280,8 +338,17 @@ namespace hrcontact
       {
         const int    in = n, im = m, one_i = 1;
         const double one = 1., zero = 0.;
-        dgemv_("N", &in, &im, &one, X.data(), &in, s0.data(), &one_i, &zero,
-               xs.data(), &one_i);
+        dgemv_("N",
+               &in,
+               &im,
+               &one,
+               X.data(),
+               &in,
+               s0.data(),
+               &one_i,
+               &zero,
+               xs.data(),
+               &one_i);
       }
     for (unsigned int i = 0; i < n; ++i)
       s[perm[i]] = -xs[i];
@@ -312,8 +379,17 @@ namespace hrcontact
       {
         const int    in = n, im = m, one_i = 1;
         const double minus_one = -1., one = 1.;
-        dgemv_("T", &in, &im, &minus_one, X.data(), &in, v1.data(), &one_i, &one,
-               s0.data(), &one_i);
+        dgemv_("T",
+               &in,
+               &im,
+               &minus_one,
+               X.data(),
+               &in,
+               v1.data(),
+               &one_i,
+               &one,
+               s0.data(),
+               &one_i);
       }
     if (m > 0)
       {
@@ -327,8 +403,9 @@ namespace hrcontact
   }
 
   std::vector<double>
-  EquilibriumReduction::row_displacements(const Vector<double>      &s,
-                                          const std::vector<double> &contact_w) const
+  EquilibriumReduction::row_displacements(
+    const Vector<double>      &s,
+    const std::vector<double> &contact_w) const
   {
     const EquilibriumSystem &sys = *system;
     AssertDimension(contact_w.size(), sys.contact_rows.size());

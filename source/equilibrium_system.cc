@@ -44,8 +44,8 @@ namespace hrcontact
     Fs.reinit(n_stress_dofs);
     for (unsigned int c = 0; c < cell_stress_dofs.size(); ++c)
       {
-        const auto  &dofs = cell_stress_dofs[c];
-        const auto  &Fc   = cell_flexibility[c];
+        const auto &dofs = cell_stress_dofs[c];
+        const auto &Fc   = cell_flexibility[c];
         for (unsigned int i = 0; i < dofs.size(); ++i)
           {
             double sum = 0;

@@ -64,7 +64,7 @@ namespace hrcontact
     const unsigned int n_s = fe_s.n_dofs_per_cell();
 
     // E^{-1} in the stress basis: K(c, c') = T_c : E^{-1} T_c'.
-    FullMatrix<double> K(n_comp, n_comp);
+    FullMatrix<double>                   K(n_comp, n_comp);
     std::vector<SymmetricTensor<2, dim>> T(n_comp);
     for (unsigned int c = 0; c < n_comp; ++c)
       T[c] = MixedSpaces<dim>::stress_basis_tensor(c);
@@ -122,7 +122,7 @@ namespace hrcontact
               }
             for (unsigned int i = 0; i < n_s; ++i)
               {
-                const unsigned int ci  = fe_s.system_to_component_index(i).first;
+                const unsigned int ci = fe_s.system_to_component_index(i).first;
                 const double       psi = fv_s.shape_value(i, q);
                 for (unsigned int j = 0; j < n_s; ++j)
                   {
@@ -139,9 +139,11 @@ namespace hrcontact
                 // having ones at (p,q) and (q,p).
                 for (unsigned int j = 0; j < n_s; ++j)
                   {
-                    const unsigned int c = fe_s.system_to_component_index(j).first;
-                    const auto pq = MixedSpaces<dim>::stress_component_indices(c);
-                    double     eps_T = 0;
+                    const unsigned int c =
+                      fe_s.system_to_component_index(j).first;
+                    const auto pq =
+                      MixedSpaces<dim>::stress_component_indices(c);
+                    double eps_T = 0;
                     if (pq.first == pq.second)
                       eps_T = (a == pq.first) ? grad[a] : 0.;
                     else
@@ -155,7 +157,8 @@ namespace hrcontact
                 scene.body_force->vector_value(fv_u.quadrature_point(q), force);
                 for (unsigned int i = 0; i < n_u; ++i)
                   {
-                    const unsigned int a = fe_u.system_to_component_index(i).first;
+                    const unsigned int a =
+                      fe_u.system_to_component_index(i).first;
                     fc(i) += fv_u.shape_value(i, q) * force(a) * JxW;
                   }
               }
@@ -210,9 +213,9 @@ namespace hrcontact
     const auto            &tria = dh_u.get_triangulation();
 
     // Nodes: the used vertices, numbered in vertex order.
-    std::vector<int>                                 node_of_vertex(tria.n_vertices(), -1);
+    std::vector<int> node_of_vertex(tria.n_vertices(), -1);
     std::vector<std::array<types::global_dof_index, dim>> node_dofs;
-    std::vector<Point<dim>>                          node_points;
+    std::vector<Point<dim>>                               node_points;
     for (const auto &cell : dh_u.active_cell_iterators())
       for (const auto v : cell->vertex_indices())
         if (node_of_vertex[cell->vertex_index(v)] < 0)
@@ -322,9 +325,9 @@ namespace hrcontact
         row.combination.emplace_back(node_dofs[node][d], direction[d]);
       const unsigned int r = system.rows.size();
       system.rows.push_back(row);
-      (row_class == RowClass::free      ? system.free_rows :
-       row_class == RowClass::contact   ? system.contact_rows :
-                                          system.prescribed_rows)
+      (row_class == RowClass::free    ? system.free_rows :
+       row_class == RowClass::contact ? system.contact_rows :
+                                        system.prescribed_rows)
         .push_back(r);
     };
 
@@ -345,7 +348,8 @@ namespace hrcontact
             for (const auto &nf : face_normals[node])
               if (nf * n < std::cos(numbers::PI / 4))
                 throw InputError(
-                  "Supports/Normal displacements: " + system.describe_node(node) +
+                  "Supports/Normal displacements: " +
+                  system.describe_node(node) +
                   " is a corner between faces whose normals differ by more "
                   "than 45 degrees; one normal cannot represent it. Prescribe "
                   "the displacement components there instead.");

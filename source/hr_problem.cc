@@ -76,13 +76,14 @@ namespace hrcontact
       scene.create_mesh(triangulation);
       spaces.setup(triangulation);
     }
-    log << "  " << (dim == 2 ? "2D (" + scene.plane_condition_name() + ")" : "3D")
+    log << "  "
+        << (dim == 2 ? "2D (" + scene.plane_condition_name() + ")" : "3D")
         << ", stress element " << spaces.stress_element_name << '\n'
         << "  mesh: " << triangulation.n_active_cells() << " cells, "
         << triangulation.n_used_vertices() << " nodes\n"
         << "  dofs: " << spaces.dof_handler_displacement.n_dofs()
-        << " displacement, " << spaces.dof_handler_stress.n_dofs()
-        << " stress" << std::endl;
+        << " displacement, " << spaces.dof_handler_stress.n_dofs() << " stress"
+        << std::endl;
 
     {
       TimerOutput::Scope t(timer, "assembly");
@@ -163,15 +164,16 @@ namespace hrcontact
       add_reaction(system.contact_rows[k], contact_reactions[k]);
     for (unsigned int k = 0; k < system.prescribed_rows.size(); ++k)
       add_reaction(system.prescribed_rows[k], support_reactions[k]);
-    double imbalance = 0;
-    const char *xyz = "xyz";
+    double      imbalance = 0;
+    const char *xyz       = "xyz";
     for (unsigned int d = 0; d < dim; ++d)
       {
         summary.add(std::string("total_load_") + xyz[d], load[d]);
         summary.add(std::string("total_reaction_") + xyz[d], reaction[d]);
         imbalance = std::max(imbalance, std::abs(load[d] + reaction[d]));
       }
-    summary.add("equilibrium_imbalance", scale > 0 ? imbalance / scale : imbalance);
+    summary.add("equilibrium_imbalance",
+                scale > 0 ? imbalance / scale : imbalance);
     double max_p = 0;
     for (const double p : contact_reactions)
       max_p = std::max(max_p, std::abs(p));
@@ -198,16 +200,17 @@ namespace hrcontact
                               displacement,
                               stress,
                               output.directory + "/solution.vtu");
-    summary.add("wall_time",
-                timer.get_summary_data(TimerOutput::total_wall_time).empty() ?
-                  0. :
-                  [this] {
-                    double sum = 0;
-                    for (const auto &[k, v] :
-                         timer.get_summary_data(TimerOutput::total_wall_time))
-                      sum += v;
-                    return sum;
-                  }());
+    summary.add(
+      "wall_time",
+      timer.get_summary_data(TimerOutput::total_wall_time).empty() ?
+        0. :
+        [this] {
+          double sum = 0;
+          for (const auto &[k, v] :
+               timer.get_summary_data(TimerOutput::total_wall_time))
+            sum += v;
+          return sum;
+        }());
     summary.write(output.directory + "/summary.txt");
     log << "  results in " << output.directory << "/ (summary.txt"
         << (output.write_vtu ? ", solution.vtu" : "") << ")" << std::endl;

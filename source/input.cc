@@ -53,8 +53,8 @@ namespace hrcontact
       {
         const auto eq = item.find('=');
         if (item.empty() || eq == std::string::npos)
-          throw InputError(where + ": expected 'name = expression' but found '" +
-                           item + "'.");
+          throw InputError(
+            where + ": expected 'name = expression' but found '" + item + "'.");
         const std::string name = Utilities::trim(item.substr(0, eq));
         const std::string expr = Utilities::trim(item.substr(eq + 1));
         if (name.empty() ||
@@ -69,8 +69,10 @@ namespace hrcontact
         if (name == "x" || name == "y" || name == "z")
           throw InputError(where + ": '" + name +
                            "' is a coordinate and cannot be a constant.");
-        constants[name] = evaluate_constant_expression(
-          expr, constants, where + ", constant '" + name + "'");
+        constants[name] =
+          evaluate_constant_expression(expr,
+                                       constants,
+                                       where + ", constant '" + name + "'");
       }
     return constants;
   }
@@ -80,7 +82,7 @@ namespace hrcontact
                                const Constants   &constants,
                                const std::string &where)
   {
-    const auto f = make_function<1>(expression, 1, constants, where);
+    const auto   f     = make_function<1>(expression, 1, constants, where);
     const double value = f->value(Point<1>());
     if (!std::isfinite(value))
       throw InputError(where + ": the expression '" + expression +
@@ -107,11 +109,11 @@ namespace hrcontact
                          "'.");
 
     const std::string variables = (dim == 1 ? "x" : dim == 2 ? "x,y" : "x,y,z");
-    auto              f         = std::make_unique<FunctionParser<dim>>(n_components);
+    auto              f = std::make_unique<FunctionParser<dim>>(n_components);
     // deal.II prints muparser's raw diagnostic to std::cerr before it
     // throws; keep it out of the user's console, our message says it better.
-    std::ostringstream       muparser_noise;
-    std::streambuf    *const cerr_buffer = std::cerr.rdbuf(muparser_noise.rdbuf());
+    std::ostringstream    muparser_noise;
+    std::streambuf *const cerr_buffer = std::cerr.rdbuf(muparser_noise.rdbuf());
     struct RestoreCerr
     {
       std::streambuf *buffer;
@@ -130,13 +132,13 @@ namespace hrcontact
       }
     catch (const ExceptionBase &e)
       {
-        throw InputError(where + ": cannot parse '" + expressions + "': " +
-                         deal_ii_message(e));
+        throw InputError(where + ": cannot parse '" + expressions +
+                         "': " + deal_ii_message(e));
       }
     catch (const std::exception &e)
       {
-        throw InputError(where + ": cannot parse '" + expressions + "': " +
-                         e.what());
+        throw InputError(where + ": cannot parse '" + expressions +
+                         "': " + e.what());
       }
     return f;
   }
@@ -172,11 +174,15 @@ namespace hrcontact
           throw InputError(where + ": cannot read '" + item.substr(0, colon) +
                            "' as 'id [components]'.");
         if (!letters.empty() && !allow_components)
-          throw InputError(where + ": entry '" + item +
-                           "' names components, which this list does not take.");
+          throw InputError(
+            where + ": entry '" + item +
+            "' names components, which this list does not take.");
         for (const char c : letters)
           {
-            const unsigned int comp = (c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : 99);
+            const unsigned int comp = (c == 'x' ? 0 :
+                                       c == 'y' ? 1 :
+                                       c == 'z' ? 2 :
+                                                  99);
             if (comp >= dim)
               throw InputError(where + ": '" + std::string(1, c) +
                                "' is not a displacement component in " +
@@ -225,12 +231,18 @@ namespace hrcontact
   }
 
   template std::unique_ptr<FunctionParser<1>>
-  make_function<1>(const std::string &, const unsigned int, const Constants &,
+  make_function<1>(const std::string &,
+                   const unsigned int,
+                   const Constants &,
                    const std::string &);
   template std::unique_ptr<FunctionParser<2>>
-  make_function<2>(const std::string &, const unsigned int, const Constants &,
+  make_function<2>(const std::string &,
+                   const unsigned int,
+                   const Constants &,
                    const std::string &);
   template std::unique_ptr<FunctionParser<3>>
-  make_function<3>(const std::string &, const unsigned int, const Constants &,
+  make_function<3>(const std::string &,
+                   const unsigned int,
+                   const Constants &,
                    const std::string &);
 } // namespace hrcontact

@@ -122,7 +122,7 @@ namespace hrcontact
     for (const auto &[name, text] :
          parse_named_list(prm.get("Probes"), "Postprocess/Probes"))
       {
-        const auto parts = split_and_trim(text, ':');
+        const auto        parts = split_and_trim(text, ':');
         const std::string where = "Postprocess/Probes, '" + name + "'";
         if (parts.size() != 2)
           throw InputError(where + ": expected 'name: x, y : quantity'.");
@@ -139,13 +139,15 @@ namespace hrcontact
         bool known     = false;
         for (const auto &q : quantities)
           known |= (q == probe.quantity);
-        if (!known || (dim == 2 && probe.quantity.find('z') != std::string::npos))
+        if (!known ||
+            (dim == 2 && probe.quantity.find('z') != std::string::npos))
           throw InputError(where + ": unknown quantity '" + probe.quantity +
                            "' in " + std::to_string(dim) + "D.");
         probes.push_back(probe);
       }
-    for (const auto &[name, expr] : parse_named_list(
-           prm.get("Reference values"), "Postprocess/Reference values"))
+    for (const auto &[name, expr] :
+         parse_named_list(prm.get("Reference values"),
+                          "Postprocess/Reference values"))
       {
         bool found = false;
         for (const auto &p : probes)
@@ -155,17 +157,16 @@ namespace hrcontact
                            "' is not the name of a probe.");
         reference_values.emplace_back(
           name,
-          evaluate_constant_expression(expr,
-                                       constants,
-                                       "Postprocess/Reference values, '" +
-                                         name + "'"));
+          evaluate_constant_expression(
+            expr, constants, "Postprocess/Reference values, '" + name + "'"));
       }
     const std::string rs = prm.get("Reference stress");
     if (!Utilities::trim(rs).empty())
-      reference_stress = make_function<dim>(rs,
-                                            MixedSpaces<dim>::n_stress_components,
-                                            constants,
-                                            "Postprocess/Reference stress");
+      reference_stress =
+        make_function<dim>(rs,
+                           MixedSpaces<dim>::n_stress_components,
+                           constants,
+                           "Postprocess/Reference stress");
     prm.leave_subsection();
   }
 
@@ -178,7 +179,7 @@ namespace hrcontact
       SymmetricTensor<2, dim> sigma;
       for (unsigned int c = 0; c < MixedSpaces<dim>::n_stress_components; ++c)
         {
-          const auto ab           = MixedSpaces<dim>::stress_component_indices(c);
+          const auto ab = MixedSpaces<dim>::stress_component_indices(c);
           sigma[ab.first][ab.second] = components[c];
         }
       return sigma;
@@ -214,7 +215,7 @@ namespace hrcontact
       {
         for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
           {
-            const auto sigma = stress_tensor<dim>(inputs.solution_values[q]);
+            const auto sigma    = stress_tensor<dim>(inputs.solution_values[q]);
             Vector<double> &out = computed_quantities[q];
             unsigned int    k   = 0;
             for (unsigned int a = 0; a < dim; ++a)
@@ -224,7 +225,8 @@ namespace hrcontact
             for (unsigned int d = 0; d < dim; ++d)
               out[k++] = ev[d];
             out[k++] = von_mises<dim>(sigma, scene.out_of_plane_stress(sigma));
-            for (unsigned int c = 0; c < MixedSpaces<dim>::n_stress_components; ++c)
+            for (unsigned int c = 0; c < MixedSpaces<dim>::n_stress_components;
+                 ++c)
               out[k++] = inputs.solution_values[q][c];
           }
       }
@@ -245,8 +247,9 @@ namespace hrcontact
       get_data_component_interpretation() const override
       {
         std::vector<DataComponentInterpretation::DataComponentInterpretation>
-          interpretation(dim * dim,
-                         DataComponentInterpretation::component_is_part_of_tensor);
+          interpretation(
+            dim * dim,
+            DataComponentInterpretation::component_is_part_of_tensor);
         interpretation.resize(dim * dim + dim + 1 +
                                 MixedSpaces<dim>::n_stress_components,
                               DataComponentInterpretation::component_is_scalar);
@@ -274,12 +277,16 @@ namespace hrcontact
                                   const std::string      &quantity) const
   {
     const MappingQ1<dim> mapping;
-    const auto           found = GridTools::find_active_cell_around_point(
-      mapping, spaces.dof_handler_stress, point);
+    const auto           found =
+      GridTools::find_active_cell_around_point(mapping,
+                                               spaces.dof_handler_stress,
+                                               point);
     if (found.first.state() != IteratorState::valid)
       throw InputError("Postprocess/Probes: the point (" +
-                       Utilities::to_string(point[0]) + ", ...) is outside the mesh.");
-    const Quadrature<dim> q(GeometryInfo<dim>::project_to_unit_cell(found.second));
+                       Utilities::to_string(point[0]) +
+                       ", ...) is outside the mesh.");
+    const Quadrature<dim> q(
+      GeometryInfo<dim>::project_to_unit_cell(found.second));
     if (quantity[0] == 'u')
       {
         const unsigned int component = quantity[1] - 'x';
@@ -313,13 +320,14 @@ namespace hrcontact
   Postprocessor<dim>::stress_error(const MixedSpaces<dim> &spaces,
                                    const Vector<double>   &s) const
   {
-    constexpr unsigned int n_comp = MixedSpaces<dim>::n_stress_components;
-    const QGauss<dim>      quadrature(3);
-    FEValues<dim>          fv(*spaces.fe_stress,
+    constexpr unsigned int      n_comp = MixedSpaces<dim>::n_stress_components;
+    const QGauss<dim>           quadrature(3);
+    FEValues<dim>               fv(*spaces.fe_stress,
                      quadrature,
                      update_values | update_quadrature_points |
                        update_JxW_values);
-    std::vector<Vector<double>> values(quadrature.size(), Vector<double>(n_comp));
+    std::vector<Vector<double>> values(quadrature.size(),
+                                       Vector<double>(n_comp));
     Vector<double>              ref(n_comp);
     double max_err = 0, max_ref = 0, l2_err = 0, l2_ref = 0;
     for (const auto &cell : spaces.dof_handler_stress.active_cell_iterators())
@@ -329,8 +337,8 @@ namespace hrcontact
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           {
             reference_stress->vector_value(fv.quadrature_point(q), ref);
-            const auto sh = stress_tensor<dim>(values[q]);
-            const auto sr = stress_tensor<dim>(ref);
+            const auto   sh = stress_tensor<dim>(values[q]);
+            const auto   sr = stress_tensor<dim>(ref);
             const double e = (sh - sr).norm(), r = sr.norm();
             max_err = std::max(max_err, e);
             max_ref = std::max(max_ref, r);
@@ -394,7 +402,8 @@ namespace hrcontact
                                 const std::string      &filename) const
   {
     DataOut<dim> data_out;
-    data_out.attach_triangulation(spaces.dof_handler_displacement.get_triangulation());
+    data_out.attach_triangulation(
+      spaces.dof_handler_displacement.get_triangulation());
     data_out.add_data_vector(
       spaces.dof_handler_displacement,
       u,

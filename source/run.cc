@@ -39,8 +39,8 @@ namespace hrcontact
       {
         std::ostringstream s;
         e.print_info(s);
-        throw InputError("in parameter file '" + file + "': " +
-                         Utilities::trim(s.str()));
+        throw InputError("in parameter file '" + file +
+                         "': " + Utilities::trim(s.str()));
       }
   }
 
@@ -56,7 +56,9 @@ namespace hrcontact
   } // namespace
 
   int
-  run_parameter_file(const std::string &file, std::ostream &log, std::ostream &err)
+  run_parameter_file(const std::string &file,
+                     std::ostream      &log,
+                     std::ostream      &err)
   {
     try
       {

@@ -169,8 +169,8 @@ namespace hrcontact
       const std::string b = prm.get("Body force");
       if (!Utilities::trim(b).empty())
         body_force = make_function<dim>(b, dim, constants, "Loads/Body force");
-      for (const BoundaryEntry &e :
-           parse_boundary_list(prm.get("Tractions"), dim, false, "Loads/Tractions"))
+      for (const BoundaryEntry &e : parse_boundary_list(
+             prm.get("Tractions"), dim, false, "Loads/Tractions"))
         tractions[e.boundary_id] =
           make_function<dim>(e.expressions,
                              dim,
@@ -190,12 +190,12 @@ namespace hrcontact
         {
           PrescribedDisplacement &pd = prescribed_displacements[e.boundary_id];
           pd.components              = e.components;
-          pd.values                  = make_function<dim>(
-            e.expressions,
-            e.components.size(),
-            constants,
-            "Supports/Prescribed displacements, boundary " +
-              std::to_string(e.boundary_id));
+          pd.values =
+            make_function<dim>(e.expressions,
+                               e.components.size(),
+                               constants,
+                               "Supports/Prescribed displacements, boundary " +
+                                 std::to_string(e.boundary_id));
         }
       for (const BoundaryEntry &e :
            parse_boundary_list(prm.get("Normal displacements"),

@@ -23,7 +23,8 @@ main()
     {
       std::filesystem::remove_all("should-not-exist");
       std::ostringstream log, err;
-      const int code = hrcontact::run_parameter_file(dir + name + ".prm", log, err);
+      const int          code =
+        hrcontact::run_parameter_file(dir + name + ".prm", log, err);
       std::string message = err.str();
       for (std::size_t p; (p = message.find(dir)) != std::string::npos;)
         message.replace(p, dir.size(), "<tests>/input/");

@@ -3,18 +3,19 @@
 // tip deflection, root stress at the top fibre, relative L2 stress error and
 // its observed order. Errors must fall at every refinement.
 
-#include "tests.h"
-
 #include <cmath>
+
+#include "tests.h"
 
 int
 main()
 {
-  const std::string base =
-    hrcontact_tests::read_file(std::string(SOURCE_DIR) + "/../parameters/cantilever.prm");
-  std::cout << "cells   tip/beam    root/beam   L2 stress error   order" << std::endl;
+  const std::string base = hrcontact_tests::read_file(
+    std::string(SOURCE_DIR) + "/../parameters/cantilever.prm");
+  std::cout << "cells   tip/beam    root/beam   L2 stress error   order"
+            << std::endl;
   double previous_error = 0, previous_tip = 1, previous_root = 1;
-  bool   monotone       = true;
+  bool   monotone = true;
   for (unsigned int r = 0; r < 4; ++r)
     {
       auto problem = hrcontact_tests::solve_from_text<2>(
@@ -22,18 +23,21 @@ main()
         std::to_string(r) + "\nend\n");
       hrcontact::Summary summary;
       std::ostringstream quiet;
-      problem->postprocessor.evaluate(problem->spaces, problem->scene,
-                                      problem->displacement, problem->stress,
-                                      summary, quiet);
-      const double tip  = summary.get_double("probe.tip_deflection") /
+      problem->postprocessor.evaluate(problem->spaces,
+                                      problem->scene,
+                                      problem->displacement,
+                                      problem->stress,
+                                      summary,
+                                      quiet);
+      const double tip = summary.get_double("probe.tip_deflection") /
                          summary.get_double("reference.tip_deflection");
       const double root = summary.get_double("probe.root_stress") /
                           summary.get_double("reference.root_stress");
-      const double err  = summary.get_double("stress_error_l2");
+      const double err = summary.get_double("stress_error_l2");
       std::cout << std::setw(5) << problem->triangulation.n_active_cells()
                 << std::fixed << std::setprecision(5) << std::setw(11) << tip
-                << std::setw(12) << root << std::setw(14) << std::setprecision(5)
-                << err;
+                << std::setw(12) << root << std::setw(14)
+                << std::setprecision(5) << err;
       if (r > 0)
         std::cout << std::setw(12) << std::setprecision(2)
                   << std::log2(previous_error / err);
@@ -46,6 +50,6 @@ main()
       previous_tip   = tip;
       previous_root  = root;
     }
-  std::cout << "errors decrease at every refinement: " << (monotone ? "yes" : "NO")
-            << std::endl;
+  std::cout << "errors decrease at every refinement: "
+            << (monotone ? "yes" : "NO") << std::endl;
 }

@@ -71,15 +71,17 @@ compare(const std::string &name, const std::string &text, const double angle)
     {
       // u.n = g on the bottom side, n = (sin a, -cos a) after rotation.
       const double nx = std::sin(angle), ny = -std::cos(angle);
-      g_times_n       = std::make_unique<FunctionParser<2>>(2);
-      const std::string g = "(1e-3*(1 + x*x))";
+      g_times_n            = std::make_unique<FunctionParser<2>>(2);
+      const std::string  g = "(1e-3*(1 + x*x))";
       std::ostringstream expr;
-      expr << std::setprecision(17) << g << "*(" << nx << "); " << g << "*(" << ny
-           << ")";
+      expr << std::setprecision(17) << g << "*(" << nx << "); " << g << "*("
+           << ny << ")";
       static_cast<FunctionParser<2> *>(g_times_n.get())
         ->initialize("x,y", expr.str(), {});
-      std::map<types::boundary_id, const Function<2> *> fmap = {{2, g_times_n.get()}};
-      VectorTools::compute_nonzero_normal_flux_constraints(dh, 0, {2}, fmap, constraints);
+      std::map<types::boundary_id, const Function<2> *> fmap = {
+        {2, g_times_n.get()}};
+      VectorTools::compute_nonzero_normal_flux_constraints(
+        dh, 0, {2}, fmap, constraints);
     }
   constraints.close();
 
@@ -90,16 +92,19 @@ compare(const std::string &name, const std::string &text, const double angle)
   SparseMatrix<double> K(sp);
   Vector<double>       rhs(dh.n_dofs()), u(dh.n_dofs());
 
-  const QGauss<2>   quadrature(3);
-  const QGauss<1>   face_quadrature(3);
-  FEValues<2>       fv(fe, quadrature,
+  const QGauss<2>                      quadrature(3);
+  const QGauss<1>                      face_quadrature(3);
+  FEValues<2>                          fv(fe,
+                 quadrature,
                  update_values | update_gradients | update_quadrature_points |
                    update_JxW_values);
-  FEFaceValues<2>   ff(fe, face_quadrature,
-                     update_values | update_quadrature_points | update_JxW_values);
-  const unsigned int n = fe.n_dofs_per_cell();
-  FullMatrix<double> Kc(n, n);
-  Vector<double>     fc(n), b(2);
+  FEFaceValues<2>                      ff(fe,
+                     face_quadrature,
+                     update_values | update_quadrature_points |
+                       update_JxW_values);
+  const unsigned int                   n = fe.n_dofs_per_cell();
+  FullMatrix<double>                   Kc(n, n);
+  Vector<double>                       fc(n), b(2);
   std::vector<types::global_dof_index> dofs(n);
   for (const auto &cell : dh.active_cell_iterators())
     {
@@ -125,11 +130,13 @@ compare(const std::string &name, const std::string &text, const double angle)
         }
       for (const auto f : cell->face_indices())
         if (cell->face(f)->at_boundary() &&
-            (cell->face(f)->boundary_id() == 1 || cell->face(f)->boundary_id() == 3))
+            (cell->face(f)->boundary_id() == 1 ||
+             cell->face(f)->boundary_id() == 3))
           {
             ff.reinit(cell, f);
-            const auto &tr =
-              (cell->face(f)->boundary_id() == 1) ? traction_right : traction_top;
+            const auto &tr = (cell->face(f)->boundary_id() == 1) ?
+                               traction_right :
+                               traction_top;
             for (unsigned int q = 0; q < face_quadrature.size(); ++q)
               {
                 tr.vector_value(ff.quadrature_point(q), b);
@@ -155,8 +162,8 @@ compare(const std::string &name, const std::string &text, const double angle)
   std::vector<Vector<double>> sh(quadrature.size(), Vector<double>(3));
   std::vector<std::vector<Tensor<1, 2>>> grads(quadrature.size(),
                                                std::vector<Tensor<1, 2>>(2));
-  double s_err = 0, s_max = 0;
-  auto   cs    = problem->spaces.dof_handler_stress.begin_active();
+  double                                 s_err = 0, s_max = 0;
+  auto cs = problem->spaces.dof_handler_stress.begin_active();
   for (const auto &cell : dh.active_cell_iterators())
     {
       fv.reinit(cell);
@@ -170,30 +177,35 @@ compare(const std::string &name, const std::string &text, const double angle)
           const double sxx = lambda * (exx + eyy) + 2 * mu * exx;
           const double syy = lambda * (exx + eyy) + 2 * mu * eyy;
           const double sxy = 2 * mu * exy;
-          s_err = std::max({s_err, std::abs(sh[q][0] - sxx),
-                            std::abs(sh[q][1] - syy), std::abs(sh[q][2] - sxy)});
-          s_max = std::max({s_max, std::abs(sxx), std::abs(syy), std::abs(sxy)});
+          s_err            = std::max({s_err,
+                                       std::abs(sh[q][0] - sxx),
+                                       std::abs(sh[q][1] - syy),
+                                       std::abs(sh[q][2] - sxy)});
+          s_max =
+            std::max({s_max, std::abs(sxx), std::abs(syy), std::abs(sxy)});
         }
       ++cs;
     }
 
   std::cout << name << ": " << problem->triangulation.n_active_cells()
-            << " cells, rows C/Q/H = " << problem->system.free_rows.size() << "/"
-            << problem->system.contact_rows.size() << "/"
+            << " cells, rows C/Q/H = " << problem->system.free_rows.size()
+            << "/" << problem->system.contact_rows.size() << "/"
             << problem->system.prescribed_rows.size() << "\n"
-            << "  max |u_HR - u_Q1| / max |u_Q1| < 1e-10: " << check(u_err, 1e-10)
+            << "  max |u_HR - u_Q1| / max |u_Q1| < 1e-10: "
+            << check(u_err, 1e-10)
             << "\n  max |s_HR - C eps(u_Q1)| / max |C eps(u_Q1)| < 1e-10: "
-            << check(s_err / s_max, 1e-10) << "\n  max |u_Q1| = " << u.linfty_norm()
-            << std::endl;
+            << check(s_err / s_max, 1e-10)
+            << "\n  max |u_Q1| = " << u.linfty_norm() << std::endl;
 }
 
 int
 main()
 {
   std::cout << std::setprecision(6);
-  compare("A: rectangle, clamp, body force, tractions",
-          "subsection Supports\n  set Prescribed displacements = 0: 0; 0\nend\n",
-          0.);
+  compare(
+    "A: rectangle, clamp, body force, tractions",
+    "subsection Supports\n  set Prescribed displacements = 0: 0; 0\nend\n",
+    0.);
   compare("B: rotated rectangle, bilateral normal constraint on the bottom",
           "subsection Geometry\n  set Rotation angle = 30\nend\n"
           "subsection Supports\n  set Prescribed displacements = 0: 0; 0\n"

@@ -61,7 +61,8 @@ run()
 
   std::ostringstream reference;
   reference << std::setprecision(17);
-  for (unsigned int c = 0; c < hrcontact::MixedSpaces<dim>::n_stress_components; ++c)
+  for (unsigned int c = 0; c < hrcontact::MixedSpaces<dim>::n_stress_components;
+       ++c)
     {
       const auto ab = hrcontact::MixedSpaces<dim>::stress_component_indices(c);
       reference << (c ? "; " : "") << s[ab.first][ab.second];
@@ -79,12 +80,14 @@ run()
           {
             t << (a ? "; " : "");
             for (unsigned int b = 0; b < dim; ++b)
-              t << (b ? " + " : "") << "(" << eps[a][b] << ")*" << "xyz"[b];
+              t << (b ? " + " : "") << "(" << eps[a][b] << ")*"
+                << "xyz"[b];
           }
       }
     t << "\nend\n";
     report<dim>("displacement patch",
-                *solve_from_text<dim>(patch_text<dim>(t.str(), reference.str())));
+                *solve_from_text<dim>(
+                  patch_text<dim>(t.str(), reference.str())));
   }
 
   // (b) normal stresses only, by tractions on the faces x = 1, y = 1 (z = 1)
@@ -92,7 +95,9 @@ run()
   {
     std::ostringstream ref, t;
     ref << std::setprecision(17);
-    for (unsigned int c = 0; c < hrcontact::MixedSpaces<dim>::n_stress_components; ++c)
+    for (unsigned int c = 0;
+         c < hrcontact::MixedSpaces<dim>::n_stress_components;
+         ++c)
       ref << (c ? "; " : "") << (c < dim ? s[c][c] : 0.);
     t << std::setprecision(17) << "subsection Supports\n"
       << "  set Prescribed displacements = 0 x: 0 | 2 y: 0"

@@ -16,7 +16,7 @@ using namespace hrcontact_tests;
 void
 run(const std::string &element)
 {
-  auto problem = solve_from_text<2>(R"(
+  auto               problem = solve_from_text<2>(R"(
 set Dimension = 2
 subsection Geometry
   set Grid generator = subdivided_hyper_rectangle
@@ -30,7 +30,8 @@ subsection Material
   set Plane condition = plane stress
 end
 subsection Finite elements
-  set Stress element = )" + element + R"(
+  set Stress element = )" + element +
+                                    R"(
 end
 subsection Loads
   set Body force = 0; -0.3
@@ -41,8 +42,8 @@ subsection Supports
   set Normal displacements = 2: 0.01*x
 end
 )");
-  const auto &sys = problem->system;
-  const auto &red = problem->reduction;
+  const auto        &sys     = problem->system;
+  const auto        &red     = problem->reduction;
   const unsigned int tau = sys.n_stress_dofs, n = sys.free_rows.size(),
                      m = red.n_self_equilibrated();
 
@@ -68,17 +69,19 @@ end
       s0[j] = 1;
       red.apply_R(s0, s);
       for (unsigned int i = 0; i < n; ++i)
-        cr = std::max(cr, std::abs(sys.row_times(sys.rows[sys.free_rows[i]], s)) /
-                            (c_norm * s.linfty_norm()));
+        cr = std::max(cr,
+                      std::abs(sys.row_times(sys.rows[sys.free_rows[i]], s)) /
+                        (c_norm * s.linfty_norm()));
     }
   // C t = f.
   double ct = 0, f_norm = 0;
   for (unsigned int i = 0; i < n; ++i)
     {
       const auto &row = sys.rows[sys.free_rows[i]];
-      ct     = std::max(ct, std::abs(sys.row_times(row, red.particular_stress()) -
-                                 sys.row_load(row)));
-      f_norm = std::max(f_norm, std::abs(sys.row_load(row)));
+      ct              = std::max(ct,
+                    std::abs(sys.row_times(row, red.particular_stress()) -
+                             sys.row_load(row)));
+      f_norm          = std::max(f_norm, std::abs(sys.row_load(row)));
     }
   // Rank by SVD.
   LAPACKFullMatrix<double> C_copy(C);
@@ -105,9 +108,11 @@ end
 
   std::cout << element << ": tau = " << tau << ", free rows n = " << n
             << ", rank(C) by SVD = " << rank << ", dim(s0) = " << m << "\n"
-            << "  dim(s0) == tau - rank(C): " << (m == tau - rank ? "yes" : "NO")
+            << "  dim(s0) == tau - rank(C): "
+            << (m == tau - rank ? "yes" : "NO")
             << "\n  max |C R| / (|C| |R|) < 1e-13: " << check(cr, 1e-13)
-            << "\n  max |C t - f| / max |f| < 1e-13: " << check(ct / f_norm, 1e-13)
+            << "\n  max |C t - f| / max |f| < 1e-13: "
+            << check(ct / f_norm, 1e-13)
             << "\n  |F s - B^T u| / |F s| < 1e-11: "
             << check(r.linfty_norm() / Fs.linfty_norm(), 1e-11)
             << "\n  max |u.n - g| on Q rows < 1e-14: " << check(wn, 1e-14)

@@ -103,7 +103,7 @@ namespace hrcontact
     /** L11 (unit lower) and U of P C^T, n x n, column-major. */
     std::vector<double> LU11;
     /** X = C1^{-1} C0, n x m, column-major. */
-    std::vector<double> X;
+    std::vector<double>    X;
     dealii::Vector<double> t;
     /** Cholesky factor of R^T F R, m x m, column-major (lower). */
     std::vector<double> M0_factor;

@@ -32,7 +32,7 @@ namespace hrcontact
    */
   struct EquilibriumRow
   {
-    RowClass                                                     row_class;
+    RowClass                                                        row_class;
     std::vector<std::pair<dealii::types::global_dof_index, double>> combination;
     /** Prescribed value: u-hat for H rows, the gap g for Q rows. */
     double       value = 0;
@@ -59,8 +59,8 @@ namespace hrcontact
     dealii::SparseMatrix<double> B;
     dealii::Vector<double>       load;
 
-    std::vector<EquilibriumRow> rows;
-    std::vector<unsigned int>   free_rows, contact_rows, prescribed_rows;
+    std::vector<EquilibriumRow>        rows;
+    std::vector<unsigned int>          free_rows, contact_rows, prescribed_rows;
     std::vector<std::array<double, 3>> node_coordinates;
 
     /** (B~ s)_r for the rotated row r. */

@@ -41,7 +41,7 @@ namespace hrcontact
 
   /** Write a file atomically: whole or not at all. */
   void
-  write_file_atomically(const std::string                        &filename,
+  write_file_atomically(const std::string                         &filename,
                         const std::function<void(std::ostream &)> &writer);
 
   /**
@@ -97,9 +97,9 @@ namespace hrcontact
       dealii::Point<dim> point;
       std::string        quantity;
     };
-    std::vector<Probe>                                probes;
-    std::vector<std::pair<std::string, double>>       reference_values;
-    std::unique_ptr<dealii::FunctionParser<dim>>      reference_stress;
+    std::vector<Probe>                           probes;
+    std::vector<std::pair<std::string, double>>  reference_values;
+    std::unique_ptr<dealii::FunctionParser<dim>> reference_stress;
   };
 } // namespace hrcontact
 
