@@ -69,6 +69,15 @@ extern "C"
   void
   dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
   void
+  dtrmv_(const char   *uplo,
+         const char   *trans,
+         const char   *diag,
+         const int    *n,
+         const double *a,
+         const int    *lda,
+         double       *x,
+         const int    *incx);
+  void
   dpotrs_(const char   *uplo,
           const int    *n,
           const int    *nrhs,
@@ -313,6 +322,63 @@ namespace hrcontact
           G0[j + static_cast<std::size_t>(i) * m] = avg;
         }
     M0_factor.swap(G0);
+
+    // Q R (eq. 42), row by row: (Q R)_i = sum_k Q_ik R[k, :], R[k, :] being a
+    // unit vector for s0 columns and -X[pos(k), :] for s1 columns.
+    n_q = sys.contact_rows.size();
+    QR.assign(static_cast<std::size_t>(n_q) * m, 0.);
+    a.assign(n_q, 0.);
+    for (unsigned int i = 0; i < n_q; ++i)
+      {
+        const EquilibriumRow &row = sys.rows[sys.contact_rows[i]];
+        double *const         QRi = QR.data() + static_cast<std::size_t>(i) * m;
+        for (const auto &[dof, c] : row.combination)
+          if (c != 0)
+            for (auto it = sys.B.begin(dof); it != sys.B.end(dof); ++it)
+              {
+                const unsigned int k = position[it->column()];
+                const double       v = c * it->value();
+                if (k >= n)
+                  QRi[k - n] += v;
+                else
+                  for (unsigned int j = 0; j < m; ++j)
+                    QRi[j] -= v * X[k + static_cast<std::size_t>(j) * n];
+              }
+        a[i] = sys.row_times(row, t) - sys.row_load(row);
+      }
+
+    // b0 = R^T v, v = -F t + H^T u-hat + Q^T g.
+    {
+      Vector<double> v;
+      sys.multiply_flexibility(t, v);
+      v *= -1.;
+      for (const unsigned int r : sys.prescribed_rows)
+        sys.add_row_transpose(sys.rows[r], sys.rows[r].value, v);
+      for (const unsigned int r : sys.contact_rows)
+        sys.add_row_transpose(sys.rows[r], sys.rows[r].value, v);
+      b0.reinit(m);
+      std::vector<double> v1(n);
+      for (unsigned int i = 0; i < n; ++i)
+        v1[i] = v[perm[i]];
+      for (unsigned int j = 0; j < m; ++j)
+        b0[j] = v[perm[n + j]];
+      if (n > 0 && m > 0)
+        {
+          const int    in = n, im = m, one_i = 1;
+          const double minus_one = -1., one = 1.;
+          dgemv_("T",
+                 &in,
+                 &im,
+                 &minus_one,
+                 X.data(),
+                 &in,
+                 v1.data(),
+                 &one_i,
+                 &one,
+                 b0.data(),
+                 &one_i);
+        }
+    }
     if (m > 0)
       {
         const int im   = m;
@@ -359,45 +425,39 @@ namespace hrcontact
   void
   EquilibriumReduction::solve_bilateral(Vector<double> &s) const
   {
-    const EquilibriumSystem &sys = *system;
-    // v = -F t + H^T u-hat + Q^T g; rhs = R^T v = v0 - X^T v1.
-    Vector<double> v;
-    sys.multiply_flexibility(t, v);
-    v *= -1.;
-    for (const unsigned int r : sys.prescribed_rows)
-      sys.add_row_transpose(sys.rows[r], sys.rows[r].value, v);
-    for (const unsigned int r : sys.contact_rows)
-      sys.add_row_transpose(sys.rows[r], sys.rows[r].value, v);
+    Vector<double> s0 = b0;
+    solve_M0(s0.data());
+    stress_from_s0(s0, s);
+  }
 
-    Vector<double>      s0(m);
-    std::vector<double> v1(n);
-    for (unsigned int i = 0; i < n; ++i)
-      v1[i] = v[perm[i]];
-    for (unsigned int j = 0; j < m; ++j)
-      s0[j] = v[perm[n + j]];
-    if (n > 0 && m > 0)
-      {
-        const int    in = n, im = m, one_i = 1;
-        const double minus_one = -1., one = 1.;
-        dgemv_("T",
-               &in,
-               &im,
-               &minus_one,
-               X.data(),
-               &in,
-               v1.data(),
-               &one_i,
-               &one,
-               s0.data(),
-               &one_i);
-      }
-    if (m > 0)
-      {
-        const int im = m, one_i = 1;
-        int       info = 0;
-        dpotrs_("L", &im, &one_i, M0_factor.data(), &im, s0.data(), &im, &info);
-        AssertThrow(info == 0, ExcMessage("dpotrs failed"));
-      }
+  void
+  EquilibriumReduction::solve_M0(double *x, const unsigned int n_rhs) const
+  {
+    if (m == 0)
+      return;
+    const int im = m, nr = n_rhs;
+    int       info = 0;
+    dpotrs_("L", &im, &nr, M0_factor.data(), &im, x, &im, &info);
+    AssertThrow(info == 0, ExcMessage("dpotrs failed"));
+  }
+
+  void
+  EquilibriumReduction::multiply_M0(const Vector<double> &x,
+                                    Vector<double>       &y) const
+  {
+    // M0 = L L^T: y = L (L^T x).
+    y = x;
+    if (m == 0)
+      return;
+    const int im = m, one = 1;
+    dtrmv_("L", "T", "N", &im, M0_factor.data(), &im, y.data(), &one);
+    dtrmv_("L", "N", "N", &im, M0_factor.data(), &im, y.data(), &one);
+  }
+
+  void
+  EquilibriumReduction::stress_from_s0(const Vector<double> &s0,
+                                       Vector<double>       &s) const
+  {
     apply_R(s0, s);
     s += t;
   }

@@ -244,6 +244,9 @@ namespace hrcontact
     std::vector<std::vector<Tensor<1, dim>>> face_normals(n_nodes);
     std::vector<double>                      gap(n_nodes, 0.);
     std::vector<bool>                        has_normal(n_nodes, false);
+    // Unilateral contact: the obstacle's normal and the gap, per node.
+    std::vector<int>            obstacle_of_node(n_nodes, -1);
+    std::vector<Tensor<1, dim>> obstacle_normal(n_nodes);
 
     const QGauss<dim - 1> centre(1);
     FEFaceValues<dim>     fv_face(*spaces.fe_displacement,
@@ -287,6 +290,26 @@ namespace hrcontact
                   }
               }
 
+          const auto ob = scene.obstacles.find(id);
+          if (ob != scene.obstacles.end())
+            for (const auto v : cell->face(f)->vertex_indices())
+              {
+                const unsigned int node =
+                  node_of_vertex[cell->face(f)->vertex_index(v)];
+                if (obstacle_of_node[node] >= 0 &&
+                    obstacle_of_node[node] != static_cast<int>(id))
+                  throw InputError(
+                    "Contact/Obstacles: " + system.describe_node(node) +
+                    " touches the obstacles of boundaries " +
+                    std::to_string(obstacle_of_node[node]) + " and " +
+                    std::to_string(id) +
+                    "; several obstacles at one node are not supported yet.");
+                obstacle_of_node[node] = id;
+                obstacle_normal[node]  = ob->second.normal;
+                gap[node] =
+                  (ob->second.point - node_points[node]) * ob->second.normal;
+              }
+
           const auto nd = scene.normal_displacements.find(id);
           if (nd != scene.normal_displacements.end())
             {
@@ -316,11 +339,13 @@ namespace hrcontact
     auto add_row = [&](const unsigned int    node,
                        const Tensor<1, dim> &direction,
                        const RowClass        row_class,
-                       const double          value) {
+                       const double          value,
+                       const bool            unilateral = false) {
       EquilibriumRow row;
-      row.row_class = row_class;
-      row.node      = node;
-      row.value     = value;
+      row.row_class  = row_class;
+      row.node       = node;
+      row.value      = value;
+      row.unilateral = unilateral;
       for (unsigned int d = 0; d < dim; ++d)
         row.combination.emplace_back(node_dofs[node][d], direction[d]);
       const unsigned int r = system.rows.size();
@@ -342,9 +367,16 @@ namespace hrcontact
               add_row(node, e, RowClass::prescribed, prescribed_value[node][d]);
               taken.push_back(e);
             }
-        if (has_normal[node])
+        if (has_normal[node] && obstacle_of_node[node] >= 0)
+          throw InputError("Supports: " + system.describe_node(node) +
+                           " has both a bilateral normal constraint and an "
+                           "obstacle.");
+        if (has_normal[node] || obstacle_of_node[node] >= 0)
           {
-            const Tensor<1, dim> n = normal_sum[node] / normal_sum[node].norm();
+            const bool           unilateral = (obstacle_of_node[node] >= 0);
+            const Tensor<1, dim> n =
+              unilateral ? obstacle_normal[node] :
+                           normal_sum[node] / normal_sum[node].norm();
             for (const auto &nf : face_normals[node])
               if (nf * n < std::cos(numbers::PI / 4))
                 throw InputError(
@@ -371,7 +403,7 @@ namespace hrcontact
                 "along the normal.");
             if (orthogonal)
               {
-                add_row(node, n, RowClass::contact, gap[node]);
+                add_row(node, n, RowClass::contact, gap[node], unilateral);
                 taken.push_back(n);
               }
           }

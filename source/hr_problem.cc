@@ -3,10 +3,12 @@
 #include <hrcontact/hr_assembler.h>
 #include <hrcontact/hr_problem.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <sstream>
 
 namespace hrcontact
 {
@@ -52,6 +54,7 @@ namespace hrcontact
     Scene<dim>::declare_parameters(prm);
     MixedSpaces<dim>::declare_parameters(prm);
     EquilibriumReduction::declare_parameters(prm);
+    AugmentedLagrangianSolver::declare_parameters(prm);
     Postprocessor<dim>::declare_parameters(prm);
     OutputSettings::declare_parameters(prm);
   }
@@ -63,6 +66,7 @@ namespace hrcontact
     scene.parse_parameters(prm);
     spaces.parse_parameters(prm);
     reduction.parse_parameters(prm);
+    contact_solver.parse_parameters(prm);
     postprocessor.parse_parameters(prm, scene.constants);
     output.parse_parameters(prm);
   }
@@ -97,13 +101,33 @@ namespace hrcontact
       TimerOutput::Scope t(timer, "equilibrium reduction");
       reduction.initialize(system, &log);
     }
+    has_contact = false;
+    for (const unsigned int r : system.contact_rows)
+      has_contact |= system.rows[r].unilateral;
+    contact_w.assign(system.contact_rows.size(), 0.);
+    if (has_contact)
+      {
+        TimerOutput::Scope t(timer, "augmented Lagrangian");
+        double             load_scale = 0;
+        for (unsigned int i = 0; i < system.load.size(); ++i)
+          load_scale = std::max(load_scale, std::abs(system.load[i]));
+        contact_solver.solve(system, reduction, load_scale, log);
+        reduction.stress_from_s0(contact_solver.s0, stress);
+        // After the last multiplier update mu = w_n - g (pressed: mu = 0).
+        for (unsigned int k = 0; k < contact_w.size(); ++k)
+          contact_w[k] =
+            system.rows[system.contact_rows[k]].value + contact_solver.mu[k];
+      }
+    else
+      {
+        TimerOutput::Scope t(timer, "solve");
+        reduction.solve_bilateral(stress);
+        for (unsigned int k = 0; k < contact_w.size(); ++k)
+          contact_w[k] = system.rows[system.contact_rows[k]].value;
+      }
     {
-      TimerOutput::Scope t(timer, "solve");
-      reduction.solve_bilateral(stress);
-      std::vector<double> w(system.contact_rows.size());
-      for (unsigned int k = 0; k < w.size(); ++k)
-        w[k] = system.rows[system.contact_rows[k]].value;
-      row_values = reduction.row_displacements(stress, w);
+      TimerOutput::Scope t(timer, "displacements");
+      row_values = reduction.row_displacements(stress, contact_w);
       system.displacements_from_row_values(row_values, displacement);
     }
 
@@ -138,8 +162,13 @@ namespace hrcontact
     summary.add("normal_rows", system.contact_rows.size());
     summary.add("prescribed_rows", system.prescribed_rows.size());
     summary.add("self_equilibrated_stresses", reduction.n_self_equilibrated());
-    summary.add("iterations", 0);
-    summary.add("converged", "true");
+    summary.add("contact_constraints",
+                has_contact ? contact_solver.p.size() : std::size_t(0));
+    summary.add("iterations", has_contact ? contact_solver.history.size() : 0);
+    summary.add("newton_steps",
+                has_contact ? contact_solver.total_newton_steps : 0);
+    summary.add("converged",
+                (!has_contact || contact_solver.converged) ? "true" : "false");
 
     // Global balance: the reactions (forces the supports exert on the body)
     // and the applied loads sum to zero to round-off.
@@ -178,6 +207,30 @@ namespace hrcontact
     for (const double p : contact_reactions)
       max_p = std::max(max_p, std::abs(p));
     summary.add("max_abs_p_n", max_p);
+    if (has_contact)
+      {
+        // Signorini conditions on the unilateral rows (eq. 12).
+        double max_p_positive = 0, max_penetration = 0, max_complementarity = 0;
+        unsigned int pressed = 0;
+        for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
+          if (system.rows[system.contact_rows[k]].unilateral)
+            {
+              const double p = contact_reactions[k];
+              const double gap =
+                contact_w[k] - system.rows[system.contact_rows[k]].value;
+              max_p_positive  = std::max(max_p_positive, p);
+              max_penetration = std::max(max_penetration, gap);
+              max_complementarity =
+                std::max(max_complementarity, std::abs(p * gap));
+              pressed += !contact_solver.released[k];
+            }
+        summary.add("pressed_constraints", pressed);
+        summary.add("final_norm_pbar", contact_solver.final_norm_pbar);
+        summary.add("tolerance", contact_solver.tolerance_used);
+        summary.add("max_positive_p_n", max_p_positive);
+        summary.add("max_penetration", max_penetration);
+        summary.add("max_complementarity", max_complementarity);
+      }
     double max_u = 0;
     for (unsigned int i = 0; i < displacement.size(); i += 1)
       max_u = std::max(max_u, std::abs(displacement[i]));
@@ -211,9 +264,74 @@ namespace hrcontact
             sum += v;
           return sum;
         }());
+    if (has_contact)
+      write_contact_tables();
     summary.write(output.directory + "/summary.txt");
     log << "  results in " << output.directory << "/ (summary.txt"
         << (output.write_vtu ? ", solution.vtu" : "") << ")" << std::endl;
+  }
+
+  template <int dim>
+  void
+  HRProblem<dim>::write_contact_tables() const
+  {
+    // contact.csv: one row per unilateral constraint, sorted by x, y (, z).
+    std::vector<unsigned int> order;
+    for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
+      if (system.rows[system.contact_rows[k]].unilateral)
+        order.push_back(k);
+    auto coordinates = [this](const unsigned int k) {
+      return system.node_coordinates[system.rows[system.contact_rows[k]].node];
+    };
+    std::stable_sort(order.begin(),
+                     order.end(),
+                     [&](unsigned int a, unsigned int b) {
+                       return coordinates(a) < coordinates(b);
+                     });
+    const char *xyz = "xyz";
+    write_file_atomically(
+      output.directory + "/contact.csv", [&](std::ostream &out) {
+        for (unsigned int d = 0; d < dim; ++d)
+          out << xyz[d] << ",";
+        for (unsigned int d = 0; d < dim; ++d)
+          out << "n" << xyz[d] << ",";
+        out << "gap,";
+        for (unsigned int d = 0; d < dim; ++d)
+          out << "u" << xyz[d] << ",";
+        out << "w_n,";
+        for (unsigned int d = 0; d < dim; ++d)
+          out << "reaction_" << xyz[d] << ",";
+        out << "p_n,mu,alpha,status\n";
+        out << std::setprecision(12);
+        for (const unsigned int k : order)
+          {
+            const EquilibriumRow &row = system.rows[system.contact_rows[k]];
+            for (unsigned int d = 0; d < dim; ++d)
+              out << system.node_coordinates[row.node][d] << ",";
+            for (unsigned int d = 0; d < dim; ++d)
+              out << row.combination[d].second << ",";
+            out << row.value << ",";
+            for (unsigned int d = 0; d < dim; ++d)
+              out << displacement[row.combination[d].first] << ",";
+            out << contact_w[k] << ",";
+            for (unsigned int d = 0; d < dim; ++d)
+              out << contact_reactions[k] * row.combination[d].second << ",";
+            out << contact_reactions[k] << "," << contact_solver.mu[k] << ","
+                << contact_solver.alpha[k] << ","
+                << (contact_solver.released[k] ? "open" : "contact") << "\n";
+          }
+      });
+    write_file_atomically(
+      output.directory + "/history.csv", [&](std::ostream &out) {
+        out
+          << "k,newton_steps,alpha_min,alpha_max,eps_k,norm_pbar,active_changes,"
+             "seconds\n";
+        out << std::setprecision(8);
+        for (const auto &h : contact_solver.history)
+          out << h.k << "," << h.newton_steps << "," << h.alpha_min << ","
+              << h.alpha_max << "," << h.eps_k << "," << h.norm_pbar << ","
+              << h.active_changes << "," << h.seconds << "\n";
+      });
   }
 
   template <int dim>
@@ -224,6 +342,18 @@ namespace hrcontact
     output_results(log);
     if (output.print_timing)
       timer.print_summary();
+    if (has_contact && !contact_solver.converged)
+      {
+        std::ostringstream s;
+        s << "the augmented Lagrangian iteration did not converge in "
+          << contact_solver.history.size()
+          << " multiplier updates (Augmented Lagrangian/Maximum multiplier "
+             "updates): ||pbar|| = "
+          << contact_solver.final_norm_pbar << " > tolerance "
+          << contact_solver.tolerance_used << ". Results were written with "
+          << "converged = false.";
+        throw NotConvergedError(s.str());
+      }
   }
 
   template class HRProblem<2>;

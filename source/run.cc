@@ -73,6 +73,12 @@ namespace hrcontact
           run_dimension<3>(prm, log);
         return 0;
       }
+    catch (const NotConvergedError &e)
+      {
+        log << std::flush;
+        err << "hrcontact: error: " << e.what() << std::endl;
+        return 3;
+      }
     catch (const InputError &e)
       {
         log << std::flush;

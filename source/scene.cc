@@ -123,6 +123,22 @@ namespace hrcontact
         "Where a node also has prescribed components, they must either include all of n (then the prescribed values win) or be orthogonal to n.");
     }
     prm.leave_subsection();
+
+    prm.enter_subsection("Contact");
+    {
+      prm.declare_entry(
+        "Obstacles",
+        "",
+        Patterns::Anything(),
+        "Rigid straight obstacles (a line in 2D, a plane in 3D) for frictionless "
+        "unilateral contact, per boundary id of the body: 'id: x0, y0 [, z0] : "
+        "nx, ny [, nz]', entries separated by '|'. (x0, ...) is a point of the "
+        "obstacle and (nx, ...) its normal pointing into the obstacle (it is "
+        "normalised); coordinates are expressions of the constants. Each node "
+        "of the boundary gets one unilateral constraint w.n - g <= 0 with the "
+        "gap g = (x0 - x).n, reaction p n with p <= 0. Empty: no contact.");
+    }
+    prm.leave_subsection();
   }
 
   template <int dim>
@@ -209,6 +225,44 @@ namespace hrcontact
                              "Supports/Normal displacements, boundary " +
                                std::to_string(e.boundary_id));
     }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Contact");
+    for (const BoundaryEntry &e : parse_boundary_list(
+           prm.get("Obstacles"), dim, false, "Contact/Obstacles"))
+      {
+        const std::string where =
+          "Contact/Obstacles, boundary " + std::to_string(e.boundary_id);
+        const auto parts = split_and_trim(e.expressions, ':');
+        if (parts.size() != 2)
+          throw InputError(where + ": expected 'id: point : normal'.");
+        Obstacle obstacle;
+        for (unsigned int k = 0; k < 2; ++k)
+          {
+            const auto coords = split_and_trim(parts[k], ',');
+            if (coords.size() != dim)
+              throw InputError(where + ": expected " + std::to_string(dim) +
+                               " coordinates separated by ',' in '" + parts[k] +
+                               "'.");
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const double v =
+                  evaluate_constant_expression(coords[d], constants, where);
+                if (k == 0)
+                  obstacle.point[d] = v;
+                else
+                  obstacle.normal[d] = v;
+              }
+          }
+        if (!(obstacle.normal.norm() > 0))
+          throw InputError(where + ": the normal is zero.");
+        obstacle.normal /= obstacle.normal.norm();
+        if (normal_displacements.count(e.boundary_id))
+          throw InputError(where + ": boundary " +
+                           std::to_string(e.boundary_id) +
+                           " already has a bilateral normal constraint.");
+        obstacles[e.boundary_id] = obstacle;
+      }
     prm.leave_subsection();
   }
 

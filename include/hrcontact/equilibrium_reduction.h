@@ -90,9 +90,54 @@ namespace hrcontact
     row_displacements(const dealii::Vector<double> &s,
                       const std::vector<double>    &contact_w) const;
 
+    /** @name Pieces of the reduced functional (eq. 44-47) for the contact
+     * solver. */
+    /** @{ */
+    /** Number of Q rows (contact constraints, unilateral or bilateral). */
+    unsigned int
+    n_contact_rows() const
+    {
+      return n_q;
+    }
+    /** Row i of Q R (length m), eq. 42. */
+    const double *
+    QR_row(const unsigned int i) const
+    {
+      return QR.data() + static_cast<std::size_t>(i) * m;
+    }
+    /** a = Q t - q, eq. 42: p = Q R s0 + a. */
+    const std::vector<double> &
+    contact_offset() const
+    {
+      return a;
+    }
+    /** b0 = R^T (-F t + H^T u-hat + Q^T g): the linear term in s0. */
+    const dealii::Vector<double> &
+    linear_term() const
+    {
+      return b0;
+    }
+    /** y = M0 x with M0 = R^T F R. */
+    void
+    multiply_M0(const dealii::Vector<double> &x,
+                dealii::Vector<double>       &y) const;
+    /** x <- M0^{-1} x (Cholesky factor kept from initialize()). */
+    void
+    solve_M0(double *x, const unsigned int n_rhs = 1) const;
+    /** s = R s0 + t. */
+    void
+    stress_from_s0(const dealii::Vector<double> &s0,
+                   dealii::Vector<double>       &s) const;
+    /** @} */
+
     double pivot_tolerance = 1e-9;
 
   private:
+    unsigned int           n_q = 0;
+    std::vector<double>    QR;
+    std::vector<double>    a;
+    dealii::Vector<double> b0;
+
     const EquilibriumSystem *system = nullptr;
     unsigned int             tau = 0, n = 0, m = 0;
 

@@ -37,6 +37,9 @@ namespace hrcontact
     /** Prescribed value: u-hat for H rows, the gap g for Q rows. */
     double       value = 0;
     unsigned int node  = 0;
+    /** Q rows only: unilateral contact (w_n - g <= 0, p <= 0) rather than a
+     * bilateral constraint w_n = g. */
+    bool unilateral = false;
   };
 
   /**

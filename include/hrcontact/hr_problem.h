@@ -6,6 +6,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <hrcontact/augmented_lagrangian_solver.h>
 #include <hrcontact/equilibrium_reduction.h>
 #include <hrcontact/equilibrium_system.h>
 #include <hrcontact/mixed_spaces.h>
@@ -61,6 +62,7 @@ namespace hrcontact
     Scene<dim>                 scene;
     MixedSpaces<dim>           spaces;
     EquilibriumReduction       reduction;
+    AugmentedLagrangianSolver  contact_solver;
     Postprocessor<dim>         postprocessor;
     OutputSettings             output;
     dealii::Triangulation<dim> triangulation;
@@ -69,11 +71,18 @@ namespace hrcontact
     dealii::Vector<double> stress;
     dealii::Vector<double> displacement;
     std::vector<double>    row_values;
+    /** True when the scene has unilateral contact constraints. */
+    bool has_contact = false;
+    /** Normal displacement w_n per Q row (g + mu after the last update). */
+    std::vector<double> contact_w;
     /** p = Q s - q per contact row; r = H s - f_H per prescribed row. */
     std::vector<double> contact_reactions, support_reactions;
     Summary             summary;
 
   private:
+    void
+    write_contact_tables() const;
+
     dealii::TimerOutput timer;
     std::string         parameter_file_name;
   };

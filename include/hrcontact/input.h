@@ -24,6 +24,17 @@ namespace hrcontact
   };
 
   /**
+   * A solver that stopped without converging (the iteration limit). Every
+   * result file has been written, flagged converged = false; the executable
+   * exits with code 3.
+   */
+  class NotConvergedError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /**
    * Named constants usable in every expression of a parameter file, e.g.
    * "L = 10, D = 1, I = D^3/12": later entries may use earlier ones.
    */

@@ -78,6 +78,18 @@ namespace hrcontact
     std::map<dealii::types::boundary_id,
              std::unique_ptr<dealii::FunctionParser<dim>>>
       normal_displacements;
+
+    /**
+     * Rigid straight obstacles (a line in 2D, a plane in 3D) acting on the
+     * nodes of a boundary id: a point of the obstacle and its unit normal
+     * pointing into the obstacle. Nodal gap g = (x0 - x) . n (eq. 10, 35).
+     */
+    struct Obstacle
+    {
+      dealii::Point<dim>     point;
+      dealii::Tensor<1, dim> normal;
+    };
+    std::map<dealii::types::boundary_id, Obstacle> obstacles;
   };
 } // namespace hrcontact
 

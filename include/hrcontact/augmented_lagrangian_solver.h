@@ -1,0 +1,91 @@
+#ifndef hrcontact_augmented_lagrangian_solver_h
+#define hrcontact_augmented_lagrangian_solver_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <hrcontact/equilibrium_reduction.h>
+#include <hrcontact/equilibrium_system.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace hrcontact
+{
+  /** One row of history.csv: one multiplier update. */
+  struct AugmentedLagrangianStep
+  {
+    unsigned int k            = 0;
+    unsigned int newton_steps = 0;
+    double       alpha_min = 0, alpha_max = 0, eps_k = 0, norm_pbar = 0;
+    unsigned int active_changes = 0;
+    double       seconds        = 0;
+  };
+
+  /**
+   * Frictionless unilateral contact by the consistent augmented Lagrangian of
+   * section 4.4, on the reduced unknowns s0 of the EquilibriumReduction.
+   *
+   * Per unilateral constraint i: multiplier mu_i (meaning w_n - g) and
+   * compliance alpha_i > 0; L = mu pbar - alpha pbar^2 / 2 with
+   * pbar = max(p, mu/alpha) (eq. 26), C^1 and concave in p. Delta_i = 1
+   * ("released": a spring of stiffness 1/alpha anchored at g + mu) iff
+   * p_i > mu_i/alpha_i, else 0 ("pressed": w_n = g exactly).
+   *
+   * Trial solution: every constraint bilateral, w_n = g. Then Steps 2-6:
+   * inexact Newton on s0 (gradient eq. 46, Hessian -(M0 + (QR)^T alpha Delta
+   * QR), eq. 47) to the tolerance eps_k, multiplier update mu <- mu -
+   * alpha pbar (eq. 48), penalty update alpha <- rho alpha if ||pbar|| >
+   * delta ||pbar_prev|| (eq. 49), stop when ||pbar|| < tol.
+   *
+   * The Newton systems are solved with the Cholesky factor of M0 = R^T F R,
+   * computed once, and the Woodbury identity over the released constraints:
+   * exact, and k x k work per step instead of a new m x m factorisation.
+   */
+  class AugmentedLagrangianSolver
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * Solve. `load_scale` (a force) makes the relative tolerance and eps_k
+     * unit free. Returns true when converged.
+     */
+    bool
+    solve(const EquilibriumSystem    &system,
+          const EquilibriumReduction &reduction,
+          const double                load_scale,
+          std::ostream               &log);
+
+    // Parameters (section 4.4, Step 1).
+    double       initial_alpha  = 1e-3;
+    double       rho            = 10;
+    double       delta          = 0.25;
+    bool         per_constraint = false;
+    double       eps_min = 1e-12, eps_max = 1e-2;
+    double       absolute_tolerance = 0, relative_tolerance = 1e-10;
+    unsigned int max_updates = 100, max_newton_steps = 50;
+
+    // Results, one entry per Q row (bilateral rows: mu = 0, always pressed).
+    dealii::Vector<double>               s0;
+    std::vector<double>                  p, mu, alpha;
+    std::vector<bool>                    released;
+    std::vector<AugmentedLagrangianStep> history;
+    bool                                 converged          = false;
+    unsigned int                         total_newton_steps = 0;
+    double                               final_norm_pbar    = 0;
+    double                               tolerance_used     = 0;
+
+  private:
+    /** p = QR s0 + a. */
+    void
+    compute_p(const EquilibriumReduction &reduction);
+  };
+} // namespace hrcontact
+
+#endif
