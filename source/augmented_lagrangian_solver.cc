@@ -158,6 +158,10 @@ namespace hrcontact
     alpha.assign(nq, initial_alpha);
     released.assign(nq, false);
     history.clear();
+    p_history.clear();
+    mu_history.clear();
+    alpha_history.clear();
+    released_history.clear();
     total_newton_steps = 0;
     converged          = false;
 
@@ -208,6 +212,11 @@ namespace hrcontact
         // Step 4: multiplier update (eq. 48); afterwards mu = w_n - g.
         for (unsigned int i = 0; i < nq; ++i)
           mu[i] -= alpha[i] * pbar[i];
+
+        p_history.push_back(p);
+        mu_history.push_back(mu);
+        alpha_history.push_back(alpha);
+        released_history.push_back(released);
 
         AugmentedLagrangianStep step;
         step.k              = k;
@@ -261,7 +270,8 @@ namespace hrcontact
 
         // Step 3: Newton on s0 to ||grad|| <= eps_k ||b0||.
         newton_steps = 0;
-        Vector<double> grad(m), M0s0(m), direction(m);
+        Vector<double>            grad(m), M0s0(m), direction(m);
+        std::vector<unsigned int> previous_active;
         for (;;)
           {
             compute_p(reduction);
@@ -269,6 +279,12 @@ namespace hrcontact
             for (unsigned int i = 0; i < nq; ++i)
               if (unilateral[i] && p[i] > mu[i] / alpha[i])
                 active.push_back(i);
+            // A full Newton step that kept the released set is exact: the
+            // functional is quadratic on that piece. What gradient is left is
+            // round-off, whatever eps_k asks.
+            if (newton_steps > 0 && active == previous_active)
+              break;
+            previous_active = active;
             // grad = -M0 s0 + b0 + sum_active q_i (mu_i - alpha_i p_i)
             reduction.multiply_M0(s0, M0s0);
             grad = b0;

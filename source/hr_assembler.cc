@@ -385,26 +385,28 @@ namespace hrcontact
                   " is a corner between faces whose normals differ by more "
                   "than 45 degrees; one normal cannot represent it. Prescribe "
                   "the displacement components there instead.");
-            // Split n into its part along the prescribed axes and the rest:
-            // if n lies in their span the prescribed values already fix
-            // u.n (the H rows win, no Q row); if n is orthogonal to them the
-            // two coexist; anything in between is a conflict.
-            Tensor<1, dim> n_rest = n;
-            for (const auto &e : taken)
-              n_rest -= (n * e) * e;
-            const bool orthogonal = (n_rest.norm() > 1 - 1e-8);
-            const bool implied    = (n_rest.norm() < 1e-8);
-            if (!orthogonal && !implied)
-              throw InputError(
-                "Supports: " + system.describe_node(node) +
-                " has prescribed displacement components that neither contain "
-                "nor are orthogonal to its normal constraint; the two "
-                "constraints conflict. Prescribe all components there or none "
-                "along the normal.");
-            if (orthogonal)
+            // With prescribed components at the node, u.n <= g (or = g)
+            // only constrains the free part of u: n_free . u_free <= g -
+            // n . u-hat, n_free = n minus its prescribed-axis part. The row
+            // takes the unit direction of n_free and the scaled gap; if n_free
+            // vanishes, the prescribed values fix u.n and there is no row.
+            Tensor<1, dim> n_free = n;
+            double         g      = gap[node];
+            for (unsigned int d = 0; d < dim; ++d)
+              if (prescribed[node][d])
+                {
+                  g -= n[d] * prescribed_value[node][d];
+                  n_free[d] = 0;
+                }
+            if (n_free.norm() > 1e-8)
               {
-                add_row(node, n, RowClass::contact, gap[node], unilateral);
-                taken.push_back(n);
+                const double length = n_free.norm();
+                add_row(node,
+                        n_free / length,
+                        RowClass::contact,
+                        g / length,
+                        unilateral);
+                taken.push_back(n_free / length);
               }
           }
         // The free rows span the orthogonal complement of what is taken

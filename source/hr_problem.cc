@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace hrcontact
@@ -28,6 +29,27 @@ namespace hrcontact
                       Patterns::Bool(),
                       "Write solution.vtu (displacement, stress tensor, "
                       "principal stresses, von Mises) for ParaView.");
+    prm.declare_entry(
+      "Hertz load",
+      "",
+      Patterns::Anything(),
+      "2D contact: the total load per unit length P on the full cylinder of a "
+      "Hertz problem (an expression of the constants). With Hertz radius set, "
+      "summary.txt compares contact_half_width and peak_pressure with "
+      "hertz_half_width = sqrt(4 P R / (pi E*)) and hertz_peak_pressure = 2 "
+      "P / (pi a), E* = E/(1 - nu^2). Empty: no comparison.");
+    prm.declare_entry("Hertz radius",
+                      "",
+                      Patterns::Anything(),
+                      "The cylinder radius R of the Hertz comparison.");
+    prm.declare_entry(
+      "Tracked contact nodes",
+      "",
+      Patterns::Anything(),
+      "Points 'x, y [, z]' separated by '|': the nearest contact node of each "
+      "gets its normal displacement and reaction at every multiplier update "
+      "written to contact-history.csv (k, node, x, y, w_n, p_n, alpha, "
+      "status).");
     prm.declare_entry("Print timing",
                       "true",
                       Patterns::Bool(),
@@ -41,9 +63,12 @@ namespace hrcontact
   OutputSettings::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    directory    = prm.get("Output directory");
-    write_vtu    = prm.get_bool("Write solution");
-    print_timing = prm.get_bool("Print timing");
+    directory     = prm.get("Output directory");
+    write_vtu     = prm.get_bool("Write solution");
+    print_timing  = prm.get_bool("Print timing");
+    hertz_load    = prm.get("Hertz load");
+    hertz_radius  = prm.get("Hertz radius");
+    tracked_nodes = prm.get("Tracked contact nodes");
     prm.leave_subsection();
   }
 
@@ -265,17 +290,19 @@ namespace hrcontact
           return sum;
         }());
     if (has_contact)
-      write_contact_tables();
+      {
+        contact_pressure_summary(log);
+        write_contact_tables();
+      }
     summary.write(output.directory + "/summary.txt");
     log << "  results in " << output.directory << "/ (summary.txt"
         << (output.write_vtu ? ", solution.vtu" : "") << ")" << std::endl;
   }
 
   template <int dim>
-  void
-  HRProblem<dim>::write_contact_tables() const
+  std::vector<unsigned int>
+  HRProblem<dim>::sorted_contact_rows() const
   {
-    // contact.csv: one row per unilateral constraint, sorted by x, y (, z).
     std::vector<unsigned int> order;
     for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
       if (system.rows[system.contact_rows[k]].unilateral)
@@ -288,7 +315,93 @@ namespace hrcontact
                      [&](unsigned int a, unsigned int b) {
                        return coordinates(a) < coordinates(b);
                      });
-    const char *xyz = "xyz";
+    return order;
+  }
+
+  template <int dim>
+  void
+  HRProblem<dim>::contact_pressure_summary(std::ostream &log)
+  {
+    if (dim != 2)
+      return;
+    // Pressure at a node = -p / (half the lengths of its two neighbouring
+    // contact edges): the nodal reaction spread over its tributary length.
+    // Assumes the contact boundary is one curve, monotone in x.
+    const std::vector<unsigned int> order = sorted_contact_rows();
+    const unsigned int              nc    = order.size();
+    auto                            point = [&](const unsigned int j) {
+      const auto &c =
+        system
+          .node_coordinates[system.rows[system.contact_rows[order[j]]].node];
+      return Point<2>(c[0], c[1]);
+    };
+    double peak = 0, zone_end = 0;
+    bool   any_pressed = false;
+    for (unsigned int j = 0; j < nc; ++j)
+      {
+        const double left = (j > 0) ? point(j).distance(point(j - 1)) : 0.;
+        const double right =
+          (j + 1 < nc) ? point(j).distance(point(j + 1)) : 0.;
+        const double       tributary = 0.5 * (left + right);
+        const unsigned int k         = order[j];
+        if (!contact_solver.released[k] && tributary > 0)
+          {
+            any_pressed = true;
+            peak        = std::max(peak, -contact_reactions[k] / tributary);
+            // The zone ends halfway to the next open node.
+            zone_end = point(j)[0] +
+                       ((j + 1 < nc && contact_solver.released[order[j + 1]]) ?
+                          0.5 * (point(j + 1)[0] - point(j)[0]) :
+                          0.);
+          }
+      }
+    double zone_start = 0;
+    for (unsigned int j = 0; j < nc; ++j)
+      if (!contact_solver.released[order[j]])
+        {
+          zone_start = point(j)[0] -
+                       ((j > 0) ? 0.5 * (point(j)[0] - point(j - 1)[0]) : 0.);
+          break;
+        }
+    summary.add("peak_pressure", any_pressed ? peak : 0.);
+    summary.add("contact_zone_x_min", zone_start);
+    summary.add("contact_zone_x_max", zone_end);
+    if (Utilities::trim(output.hertz_load).empty() ||
+        Utilities::trim(output.hertz_radius).empty())
+      return;
+    // Plane strain Hertz contact of a cylinder on a rigid plane; the half
+    // model's pressed zone starts at the symmetry plane.
+    const double P       = evaluate_constant_expression(output.hertz_load,
+                                                  scene.constants,
+                                                  "Output/Hertz load");
+    const double R       = evaluate_constant_expression(output.hertz_radius,
+                                                  scene.constants,
+                                                  "Output/Hertz radius");
+    const double nu      = scene.poisson_ratio;
+    const double E_star  = scene.youngs_modulus / (1 - nu * nu);
+    const double a_hertz = std::sqrt(4 * P * R / (numbers::PI * E_star));
+    const double p_hertz = 2 * P / (numbers::PI * a_hertz);
+    const double a       = zone_end - zone_start;
+    summary.add("contact_half_width", a);
+    summary.add("hertz_half_width", a_hertz);
+    summary.add("relative_error_half_width", (a - a_hertz) / a_hertz);
+    summary.add("hertz_peak_pressure", p_hertz);
+    summary.add("relative_error_peak_pressure", (peak - p_hertz) / p_hertz);
+    log << "  Hertz: half width " << std::setprecision(5) << a << " (Hertz "
+        << a_hertz << ", error " << std::setprecision(3)
+        << 100 * (a - a_hertz) / a_hertz << " %), peak pressure "
+        << std::setprecision(5) << peak << " (Hertz " << p_hertz << ", error "
+        << std::setprecision(3) << 100 * (peak - p_hertz) / p_hertz << " %)"
+        << std::endl;
+  }
+
+  template <int dim>
+  void
+  HRProblem<dim>::write_contact_tables() const
+  {
+    // contact.csv: one row per unilateral constraint, sorted by x, y (, z).
+    const std::vector<unsigned int> order = sorted_contact_rows();
+    const char                     *xyz   = "xyz";
     write_file_atomically(
       output.directory + "/contact.csv", [&](std::ostream &out) {
         for (unsigned int d = 0; d < dim; ++d)
@@ -321,6 +434,65 @@ namespace hrcontact
                 << (contact_solver.released[k] ? "open" : "contact") << "\n";
           }
       });
+    if (!Utilities::trim(output.tracked_nodes).empty())
+      {
+        // The nearest contact node of each tracked point.
+        std::vector<unsigned int> tracked;
+        for (const std::string &text :
+             split_and_trim(output.tracked_nodes, '|'))
+          {
+            const auto coords = split_and_trim(text, ',');
+            if (coords.size() != dim)
+              throw InputError("Output/Tracked contact nodes: '" + text +
+                               "' is not a point with " + std::to_string(dim) +
+                               " coordinates.");
+            std::array<double, 3> x = {{0, 0, 0}};
+            for (unsigned int d = 0; d < dim; ++d)
+              x[d] =
+                evaluate_constant_expression(coords[d],
+                                             scene.constants,
+                                             "Output/Tracked contact nodes");
+            double       best    = std::numeric_limits<double>::max();
+            unsigned int nearest = order.front();
+            for (const unsigned int k : order)
+              {
+                const auto &c =
+                  system
+                    .node_coordinates[system.rows[system.contact_rows[k]].node];
+                double dist = 0;
+                for (unsigned int d = 0; d < dim; ++d)
+                  dist += (c[d] - x[d]) * (c[d] - x[d]);
+                if (dist < best)
+                  {
+                    best    = dist;
+                    nearest = k;
+                  }
+              }
+            tracked.push_back(nearest);
+          }
+        write_file_atomically(
+          output.directory + "/contact-history.csv", [&](std::ostream &out) {
+            out << "k,node,x,y" << (dim == 3 ? ",z" : "")
+                << ",w_n,p_n,alpha,status\n"
+                << std::setprecision(12);
+            for (unsigned int it = 0; it < contact_solver.p_history.size();
+                 ++it)
+              for (unsigned int t = 0; t < tracked.size(); ++t)
+                {
+                  const unsigned int k   = tracked[t];
+                  const auto        &row = system.rows[system.contact_rows[k]];
+                  out << it + 1 << "," << t + 1;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    out << "," << system.node_coordinates[row.node][d];
+                  out << "," << row.value + contact_solver.mu_history[it][k]
+                      << "," << contact_solver.p_history[it][k] << ","
+                      << contact_solver.alpha_history[it][k] << ","
+                      << (contact_solver.released_history[it][k] ? "open" :
+                                                                   "contact")
+                      << "\n";
+                }
+          });
+      }
     write_file_atomically(
       output.directory + "/history.csv", [&](std::ostream &out) {
         out

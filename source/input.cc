@@ -124,7 +124,9 @@ namespace hrcontact
     } restore{cerr_buffer};
     try
       {
-        f->initialize(variables, pieces, constants);
+        Constants with_pi = constants;
+        with_pi.emplace("pi", numbers::PI);
+        f->initialize(variables, pieces, with_pi);
         // muparser compiles lazily: evaluate once to surface syntax errors
         // and unknown names here, with the entry's name, not deep in a loop.
         Vector<double> values(n_components);

@@ -32,8 +32,14 @@ namespace hrcontact
         "hyper_cube",
         Patterns::Anything(),
         "Name of a deal.II GridGenerator function, e.g. hyper_cube, "
-        "subdivided_hyper_rectangle, hyper_shell. Boundary ids are those the "
-        "generator assigns (use colorize = true for a rectangle: 0 left, "
+        "subdivided_hyper_rectangle, hyper_shell, or half_cylinder (ours: the "
+        "half model of a cylinder of radius R on the plane y = -R, graded "
+        "towards the contact point; arguments R : phi_c : q, half the surface "
+        "nodes lie uniformly on the arc phi_c (radians, <= pi/4) next to the "
+        "contact point, q >= 1 thins the layers towards the surface; ids 0 "
+        "symmetry x = 0, 1 loaded "
+        "diameter y = 0, 2 curved surface). For deal.II grids the boundary "
+        "ids are those the generator assigns (use colorize = true for a rectangle: 0 left, "
         "1 right, 2 bottom, 3 top, in 3D 4 back, 5 front).");
       prm.declare_entry(
         "Grid arguments",
@@ -120,7 +126,9 @@ namespace hrcontact
         "'id: g', entries separated by '|'. n is the outward unit normal of "
         "the body at each boundary node (face normals averaged); the node's "
         "rows are rotated to (n, tangents) and the tangential ones stay free. "
-        "Where a node also has prescribed components, they must either include all of n (then the prescribed values win) or be orthogonal to n.");
+        "Where a node also has prescribed components, the constraint acts on the "
+        "free part of the displacement: n_free . u_free = g - n . u-hat, with "
+        "n_free the part of n off the prescribed axes (no row if it vanishes).");
     }
     prm.leave_subsection();
 
@@ -266,34 +274,100 @@ namespace hrcontact
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    /**
+     * Half model of a cylinder of radius R lying on the plane y = -R: the
+     * quarter disk x >= 0, y <= 0, graded towards the contact point (0, -R)
+     * by a polar map that keeps the circle exact. Along the surface, half of
+     * the nodes lie uniformly on the arc of angle phi_c next to the contact
+     * point, the spacing then grows smoothly (quadratic map) up to pi/2; the
+     * radius r becomes R (1 - (1 - r/R)^q), which thins the layers towards
+     * the surface. Boundary ids: 0 the symmetry plane x = 0, 1 the loaded
+     * diameter y = 0, 2 the curved surface.
+     */
+    void
+    half_cylinder(Triangulation<2>  &tria,
+                  const std::string &arguments,
+                  const unsigned int refinements)
+    {
+      const auto parts = split_and_trim(arguments, ':');
+      if (parts.size() != 3)
+        throw InputError(
+          "Geometry: half_cylinder takes 'R : phi_c : q' (radius, angle in "
+          "radians of the finely meshed arc, radial grading exponent).");
+      const double R = std::stod(parts[0]), phi_c = std::stod(parts[1]),
+                   q = std::stod(parts[2]);
+      if (!(R > 0) || !(phi_c > 0) || !(phi_c <= numbers::PI / 4) || !(q >= 1))
+        throw InputError("Geometry: half_cylinder needs R > 0, 0 < phi_c <= "
+                         "pi/4 and q >= 1.");
+      GridGenerator::quarter_hyper_ball(tria, Point<2>(), R);
+      GridTools::transform(
+        [](const Point<2> &x) { return Point<2>(x[1], -x[0]); }, tria);
+      tria.refine_global(refinements);
+      GridTools::transform(
+        [R, phi_c, q](const Point<2> &x) {
+          const double r = x.norm();
+          if (r == 0)
+            return x;
+          const double phi     = std::atan2(x[0], -x[1]); // from -y towards +x
+          const double half_pi = numbers::PI / 2;
+          const double t       = std::min(1., std::max(0., phi / half_pi));
+          // phi(t) = 2 phi_c t on [0, 1/2]; then the same slope plus a
+          // quadratic term reaching pi/2 at t = 1.
+          const double c       = (half_pi - 2 * phi_c) / 0.25;
+          const double phi_new = (t <= 0.5) ? 2 * phi_c * t :
+                                              phi_c + 2 * phi_c * (t - 0.5) +
+                                                c * (t - 0.5) * (t - 0.5);
+          const double r_new   = R * (1 - std::pow(std::max(0., 1 - r / R), q));
+          return Point<2>(r_new * std::sin(phi_new),
+                          -r_new * std::cos(phi_new));
+        },
+        tria);
+      tria.reset_all_manifolds();
+      tria.set_all_manifold_ids(numbers::flat_manifold_id);
+      const double tol = 1e-10 * R;
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const Point<2> c = cell->face(f)->center();
+              cell->face(f)->set_boundary_id(std::abs(c[0]) < tol ? 0 :
+                                             std::abs(c[1]) < tol ? 1 :
+                                                                    2);
+            }
+    }
+
+    template <int dim>
+    void
+    half_cylinder(Triangulation<dim> &, const std::string &, const unsigned int)
+    {
+      throw InputError("Geometry: half_cylinder is a 2D grid.");
+    }
+  } // namespace
+
   template <int dim>
   void
   Scene<dim>::create_mesh(Triangulation<dim> &triangulation) const
   {
-    try
+    if (grid_generator == "half_cylinder")
       {
-        GridGenerator::generate_from_name_and_arguments(triangulation,
-                                                        grid_generator,
-                                                        grid_arguments);
+        try
+          {
+            half_cylinder(triangulation, grid_arguments, global_refinements);
+          }
+        catch (const std::invalid_argument &)
+          {
+            throw InputError("Geometry: cannot read the half_cylinder "
+                             "arguments '" +
+                             grid_arguments + "' as 'R : phi_c : q'.");
+          }
       }
-    catch (const ExceptionBase &e)
+    else
       {
-        std::ostringstream s;
-        e.print_info(s);
-        throw InputError("Geometry: cannot create the grid '" + grid_generator +
-                         "' from the arguments '" + grid_arguments +
-                         "': " + Utilities::trim(s.str()));
+        create_generated_mesh(triangulation);
+        triangulation.refine_global(global_refinements);
       }
-    catch (const std::exception &e)
-      {
-        throw InputError("Geometry: cannot create the grid '" + grid_generator +
-                         "' from the arguments '" + grid_arguments +
-                         "': " + e.what());
-      }
-    if (triangulation.n_active_cells() == 0)
-      throw InputError("Geometry: the grid has no cells.");
-
-    triangulation.refine_global(global_refinements);
 
     if (distortion > 0)
       GridTools::distort_random(distortion, triangulation, true, 20261121);
@@ -324,6 +398,34 @@ namespace hrcontact
                "degenerate) geometry.";
           throw InputError(s.str());
         }
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::create_generated_mesh(Triangulation<dim> &triangulation) const
+  {
+    try
+      {
+        GridGenerator::generate_from_name_and_arguments(triangulation,
+                                                        grid_generator,
+                                                        grid_arguments);
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream s;
+        e.print_info(s);
+        throw InputError("Geometry: cannot create the grid '" + grid_generator +
+                         "' from the arguments '" + grid_arguments +
+                         "': " + Utilities::trim(s.str()));
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError("Geometry: cannot create the grid '" + grid_generator +
+                         "' from the arguments '" + grid_arguments +
+                         "': " + e.what());
+      }
+    if (triangulation.n_active_cells() == 0)
+      throw InputError("Geometry: the grid has no cells.");
   }
 
   template <int dim>

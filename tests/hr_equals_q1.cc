@@ -56,10 +56,6 @@ compare(const std::string &name, const std::string &text, const double angle)
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)); // plane strain
   const double mu     = E / (2 * (1 + nu));
 
-  FunctionParser<2> body(2), traction_right(2), traction_top(2);
-  body.initialize("x,y", "0.5*y; -1 + x", {});
-  traction_right.initialize("x,y", "1 + y; 0.5", {});
-  traction_top.initialize("x,y", "-0.2*x; 0", {});
 
   AffineConstraints<double> constraints;
   VectorTools::interpolate_boundary_values(dh,
@@ -92,62 +88,17 @@ compare(const std::string &name, const std::string &text, const double angle)
   SparseMatrix<double> K(sp);
   Vector<double>       rhs(dh.n_dofs()), u(dh.n_dofs());
 
-  const QGauss<2>                      quadrature(3);
-  const QGauss<1>                      face_quadrature(3);
-  FEValues<2>                          fv(fe,
-                 quadrature,
-                 update_values | update_gradients | update_quadrature_points |
-                   update_JxW_values);
-  FEFaceValues<2>                      ff(fe,
-                     face_quadrature,
-                     update_values | update_quadrature_points |
-                       update_JxW_values);
-  const unsigned int                   n = fe.n_dofs_per_cell();
-  FullMatrix<double>                   Kc(n, n);
-  Vector<double>                       fc(n), b(2);
-  std::vector<types::global_dof_index> dofs(n);
-  for (const auto &cell : dh.active_cell_iterators())
-    {
-      fv.reinit(cell);
-      Kc = 0;
-      fc = 0;
-      for (unsigned int q = 0; q < quadrature.size(); ++q)
-        {
-          body.vector_value(fv.quadrature_point(q), b);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const unsigned int ci = fe.system_to_component_index(i).first;
-              for (unsigned int j = 0; j < n; ++j)
-                {
-                  const unsigned int cj = fe.system_to_component_index(j).first;
-                  const auto gi = fv.shape_grad(i, q), gj = fv.shape_grad(j, q);
-                  Kc(i, j) += (lambda * gi[ci] * gj[cj] + mu * gi[cj] * gj[ci] +
-                               (ci == cj ? mu * (gi * gj) : 0.)) *
-                              fv.JxW(q);
-                }
-              fc(i) += fv.shape_value(i, q) * b(ci) * fv.JxW(q);
-            }
-        }
-      for (const auto f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            (cell->face(f)->boundary_id() == 1 ||
-             cell->face(f)->boundary_id() == 3))
-          {
-            ff.reinit(cell, f);
-            const auto &tr = (cell->face(f)->boundary_id() == 1) ?
-                               traction_right :
-                               traction_top;
-            for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-              {
-                tr.vector_value(ff.quadrature_point(q), b);
-                for (unsigned int i = 0; i < n; ++i)
-                  fc(i) += ff.shape_value(i, q) *
-                           b(fe.system_to_component_index(i).first) * ff.JxW(q);
-              }
-          }
-      cell->get_dof_indices(dofs);
-      constraints.distribute_local_to_global(Kc, fc, dofs, K, rhs);
-    }
+  assemble_q1_elasticity(dh,
+                         E,
+                         nu,
+                         "0.5*y; -1 + x",
+                         {{1, "1 + y; 0.5"}, {3, "-0.2*x; 0"}},
+                         constraints,
+                         K,
+                         rhs);
+  const QGauss<2> quadrature(3);
+  FEValues<2>     fv(fe, quadrature, update_gradients);
+
   SparseDirectUMFPACK direct;
   direct.initialize(K);
   direct.vmult(u, rhs);

@@ -1,19 +1,21 @@
 // Small helpers shared by the test programs (deal.II's own tests.h is not
 // installed with the library).
 #ifndef hrcontact_tests_h
-#define hrcontact_tests_h
+#  define hrcontact_tests_h
 
-#include <deal.II/base/parameter_handler.h>
+#  include <deal.II/base/parameter_handler.h>
 
-#include <hrcontact/hr_problem.h>
-#include <hrcontact/run.h>
+#  include <hrcontact/hr_problem.h>
+#  include <hrcontact/run.h>
 
-#include <fstream>
-#include <iomanip>
-#include <iostream>
-#include <memory>
-#include <sstream>
-#include <string>
+#  include <algorithm>
+#  include <cmath>
+#  include <fstream>
+#  include <iomanip>
+#  include <iostream>
+#  include <memory>
+#  include <sstream>
+#  include <string>
 
 namespace hrcontact_tests
 {
@@ -52,3 +54,166 @@ namespace hrcontact_tests
 } // namespace hrcontact_tests
 
 #endif
+
+namespace hrcontact_tests
+{
+  /**
+   * Signorini and equilibrium checks of a converged contact solution, from
+   * the global displacement (not from the multipliers): w_n = u.n at each
+   * unilateral row, p from Q s - q. Prints yes/NO lines.
+   */
+  template <int dim>
+  void
+  print_kkt(const hrcontact::HRProblem<dim> &problem)
+  {
+    const auto &sys = problem.system;
+    // Force and length scales for the tolerances.
+    double force = 0, length = 0;
+    for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
+      force = std::max(force, std::abs(problem.contact_reactions[k]));
+    for (unsigned int i = 0; i < problem.displacement.size(); ++i)
+      length = std::max(length, std::abs(problem.displacement[i]));
+    double       max_p = -1e300, max_pen = -1e300, max_compl = 0;
+    unsigned int pressed = 0, open = 0;
+    for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
+      {
+        const auto &row = sys.rows[sys.contact_rows[k]];
+        if (!row.unilateral)
+          continue;
+        double w = 0;
+        for (const auto &[dof, c] : row.combination)
+          w += c * problem.displacement[dof];
+        const double p = problem.contact_reactions[k];
+        max_p          = std::max(max_p, p / force);
+        max_pen        = std::max(max_pen, (w - row.value) / length);
+        max_compl =
+          std::max(max_compl, std::abs(p * (w - row.value)) / (force * length));
+        (p < -1e-6 * force ? pressed : open) += 1;
+      }
+    // Equilibrium of the free rows: C s = f.
+    double eq = 0, f_scale = force;
+    for (const unsigned int r : sys.free_rows)
+      {
+        eq      = std::max(eq,
+                      std::abs(sys.row_times(sys.rows[r], problem.stress) -
+                               sys.row_load(sys.rows[r])));
+        f_scale = std::max(f_scale, std::abs(sys.row_load(sys.rows[r])));
+      }
+    std::cout
+      << "  contact constraints: " << pressed << " pressed, " << open
+      << " open\n"
+      << "  equilibrium max |C s - f| / force scale < 1e-10: "
+      << check(eq / f_scale, 1e-10) << "\n"
+      << "  global balance |total load + total reaction| / |load| < 1e-10: "
+      << check(problem.summary.get_double("equilibrium_imbalance"), 1e-10)
+      << "\n  max p / max |p| <= 1e-10 (compressive reactions): "
+      << check(max_p, 1e-10)
+      << "\n  max (w_n - g) / max |u| <= 1e-8 (no penetration): "
+      << check(max_pen, 1e-8)
+      << "\n  max |p (w_n - g)| / (max |p| max |u|) <= 1e-8: "
+      << check(max_compl, 1e-8) << std::endl;
+  }
+} // namespace hrcontact_tests
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+
+namespace hrcontact_tests
+{
+  /**
+   * The standard Q1 displacement stiffness of linear plane-strain elasticity
+   * (Lame constants) and the load vector of a body force and per-boundary
+   * tractions, assembled independently of the library, constraints applied
+   * as deal.II does (distribute_local_to_global).
+   */
+  inline void
+  assemble_q1_elasticity(
+    const dealii::DoFHandler<2>                             &dh,
+    const double                                             E,
+    const double                                             nu,
+    const std::string                                       &body_force,
+    const std::map<dealii::types::boundary_id, std::string> &tractions,
+    const dealii::AffineConstraints<double>                 &constraints,
+    dealii::SparseMatrix<double>                            &K,
+    dealii::Vector<double>                                  &rhs)
+  {
+    using namespace dealii;
+    const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)); // plane strain
+    const double mu     = E / (2 * (1 + nu));
+    const auto  &fe     = dh.get_fe();
+    FunctionParser<2> body(2);
+    body.initialize("x,y", body_force, {});
+    std::map<types::boundary_id, std::unique_ptr<FunctionParser<2>>> traction;
+    for (const auto &[id, text] : tractions)
+      {
+        traction[id] = std::make_unique<FunctionParser<2>>(2);
+        traction[id]->initialize("x,y", text, {});
+      }
+    const QGauss<2>                      quadrature(3);
+    const QGauss<1>                      face_quadrature(3);
+    FEValues<2>                          fv(fe,
+                   quadrature,
+                   update_values | update_gradients | update_quadrature_points |
+                     update_JxW_values);
+    FEFaceValues<2>                      ff(fe,
+                       face_quadrature,
+                       update_values | update_quadrature_points |
+                         update_JxW_values);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FullMatrix<double>                   Kc(n, n);
+    Vector<double>                       fc(n), b(2);
+    std::vector<types::global_dof_index> dofs(n);
+    K   = 0;
+    rhs = 0;
+    for (const auto &cell : dh.active_cell_iterators())
+      {
+        fv.reinit(cell);
+        Kc = 0;
+        fc = 0;
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          {
+            body.vector_value(fv.quadrature_point(q), b);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const unsigned int ci = fe.system_to_component_index(i).first;
+                for (unsigned int j = 0; j < n; ++j)
+                  {
+                    const unsigned int cj =
+                      fe.system_to_component_index(j).first;
+                    const auto gi = fv.shape_grad(i, q),
+                               gj = fv.shape_grad(j, q);
+                    Kc(i, j) +=
+                      (lambda * gi[ci] * gj[cj] + mu * gi[cj] * gj[ci] +
+                       (ci == cj ? mu * (gi * gj) : 0.)) *
+                      fv.JxW(q);
+                  }
+                fc(i) += fv.shape_value(i, q) * b(ci) * fv.JxW(q);
+              }
+          }
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              traction.count(cell->face(f)->boundary_id()))
+            {
+              ff.reinit(cell, f);
+              for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                {
+                  traction[cell->face(f)->boundary_id()]->vector_value(
+                    ff.quadrature_point(q), b);
+                  for (unsigned int i = 0; i < n; ++i)
+                    fc(i) += ff.shape_value(i, q) *
+                             b(fe.system_to_component_index(i).first) *
+                             ff.JxW(q);
+                }
+            }
+        cell->get_dof_indices(dofs);
+        constraints.distribute_local_to_global(Kc, fc, dofs, K, rhs);
+      }
+  }
+} // namespace hrcontact_tests

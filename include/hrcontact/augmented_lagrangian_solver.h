@@ -76,10 +76,14 @@ namespace hrcontact
     std::vector<double>                  p, mu, alpha;
     std::vector<bool>                    released;
     std::vector<AugmentedLagrangianStep> history;
-    bool                                 converged          = false;
-    unsigned int                         total_newton_steps = 0;
-    double                               final_norm_pbar    = 0;
-    double                               tolerance_used     = 0;
+    /** Per multiplier update k: p of the solve, mu after the update (so that
+     * w_n = g + mu), alpha used, and the released flags. */
+    std::vector<std::vector<double>> p_history, mu_history, alpha_history;
+    std::vector<std::vector<bool>>   released_history;
+    bool                             converged          = false;
+    unsigned int                     total_newton_steps = 0;
+    double                           final_norm_pbar    = 0;
+    double                           tolerance_used     = 0;
 
   private:
     /** p = QR s0 + a. */

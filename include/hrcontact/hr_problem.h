@@ -26,6 +26,9 @@ namespace hrcontact
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
+    /** 2D contact postprocessing (see declare_parameters). */
+    std::string hertz_load, hertz_radius, tracked_nodes;
+
     std::string directory    = "output";
     bool        write_vtu    = true;
     bool        print_timing = true;
@@ -82,6 +85,12 @@ namespace hrcontact
   private:
     void
     write_contact_tables() const;
+    /** Pressures from nodal reactions, contact zone, Hertz comparison. */
+    void
+    contact_pressure_summary(std::ostream &log);
+    /** Sorted unilateral Q-row indices (by x, then y, then z). */
+    std::vector<unsigned int>
+    sorted_contact_rows() const;
 
     dealii::TimerOutput timer;
     std::string         parameter_file_name;

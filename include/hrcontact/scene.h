@@ -34,6 +34,10 @@ namespace hrcontact
     void
     create_mesh(dealii::Triangulation<dim> &triangulation) const;
 
+    /** A deal.II GridGenerator grid by name and arguments, unrefined. */
+    void
+    create_generated_mesh(dealii::Triangulation<dim> &triangulation) const;
+
     /** Compliance E^{-1}: strain from stress (plane strain uses E', nu'). */
     dealii::SymmetricTensor<2, dim>
     strain_from_stress(const dealii::SymmetricTensor<2, dim> &sigma) const;
