@@ -46,8 +46,10 @@ namespace hrcontact
     prm.declare_entry("Minimum inner tolerance",
                       "1e-12",
                       Patterns::Double(0),
-                      "eps_min of Step 2, on the gradient norm relative to "
-                      "the trial right-hand side.");
+                      "eps_min of Step 2: each inner Newton solve reduces the "
+                      "gradient norm of eq. 46 by the factor eps_k at least "
+                      "(or stops earlier when a full step keeps the released "
+                      "set: then it is exact).");
     prm.declare_entry("Maximum inner tolerance",
                       "1e-2",
                       Patterns::Double(0),
@@ -268,10 +270,11 @@ namespace hrcontact
                      {eps_max, eps_previous, relative_pbar * relative_pbar}));
         eps_previous = eps_k;
 
-        // Step 3: Newton on s0 to ||grad|| <= eps_k ||b0||.
+        // Step 3: Newton on s0 until ||grad|| <= eps_k ||grad at the start||.
         newton_steps = 0;
         Vector<double>            grad(m), M0s0(m), direction(m);
         std::vector<unsigned int> previous_active;
+        double                    initial_grad_norm = 0;
         for (;;)
           {
             compute_p(reduction);
@@ -296,7 +299,13 @@ namespace hrcontact
                 for (unsigned int j = 0; j < m; ++j)
                   grad[j] += c * q[j];
               }
-            if (grad.l2_norm() <= eps_k * b0_norm ||
+            // Step 3's tolerance as a reduction of the gradient within this
+            // inner solve: unit free, and every update makes progress.
+            const double grad_norm = grad.l2_norm();
+            if (newton_steps == 0)
+              initial_grad_norm = grad_norm;
+            if (grad_norm <= eps_k * initial_grad_norm ||
+                grad_norm <= 1e-15 * b0_norm ||
                 newton_steps >= max_newton_steps)
               break;
 
