@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Hertz refinement table for doc/contact.md: parameters/hertz.prm at the given
+# numbers of global refinements (default 1 2 3 4), one run each. Columns:
+# cells, displacement and stress dofs, contact half width a and peak pressure
+# p0 with their errors against Hertz, multiplier updates, Newton steps, wall
+# seconds of the whole run, peak resident memory.
+#   bash scripts/hertz-table.sh [refinements ...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ -x build/hrcontact ] || { echo "build first: bash scripts/quickstart.sh example" >&2; exit 1; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+echo "| refinements | cells | u dofs | stress dofs | a (mm) | error a | p0 (GPa) | error p0 | updates | Newton steps | wall s | peak RSS MiB |"
+echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+for r in ${*:-1 2 3 4}; do
+  cat > "$tmp/run.prm" <<PRM
+include $PWD/parameters/hertz.prm
+subsection Geometry
+  set Global refinements = $r
+end
+subsection Output
+  set Output directory = $tmp/out
+  set Write solution   = false
+  set Print timing     = false
+end
+PRM
+  start=$(date +%s.%N)
+  /usr/bin/time -f "%M" -o "$tmp/rss" ./build/hrcontact "$tmp/run.prm" > "$tmp/log"
+  end=$(date +%s.%N)
+  s="$tmp/out/summary.txt"
+  get() { sed -n "s/^$1 = //p" "$s"; }
+  calc() { awk "BEGIN { print $1 }"; }
+  printf "| %s | %s | %s | %s | %.4f | %+.2f %% | %.3f | %+.2f %% | %s | %s | %.1f | %d |\n" \
+    "$r" "$(get cells)" "$(get displacement_dofs)" "$(get stress_dofs)" \
+    "$(calc "$(get contact_half_width) * 1000")" \
+    "$(calc "$(get relative_error_half_width) * 100")" \
+    "$(calc "$(get peak_pressure) / 1e9")" \
+    "$(calc "$(get relative_error_peak_pressure) * 100")" \
+    "$(get iterations)" "$(get newton_steps)" \
+    "$(calc "$end - $start")" "$(( $(cat "$tmp/rss") / 1024 ))"
+done
