@@ -4,19 +4,29 @@
 
 #include "tests.h"
 
-int
-main()
+void
+run(const std::string &name, const std::string &extra)
 {
   auto problem = hrcontact_tests::solve_from_text<2>(
     hrcontact_tests::read_file(std::string(SOURCE_DIR) +
                                "/../parameters/lift-off.prm") +
+    extra +
     "subsection Output\n  set Write solution = false\n  set Print timing = "
     "false\n  set Output directory = results\nend\n");
   std::ostringstream quiet;
   problem->output_results(quiet);
-  std::cout << "lift-off: converged = " << problem->summary.get("converged")
+  std::cout << name << ": converged = " << problem->summary.get("converged")
             << ", total load y = " << problem->summary.get("total_load_y")
             << ", total reaction y = "
             << problem->summary.get("total_reaction_y") << std::endl;
   hrcontact_tests::print_kkt(*problem);
+}
+
+int
+main()
+{
+  run("lift-off, global penalty update", "");
+  run("lift-off, per-constraint penalty update",
+      "subsection Augmented Lagrangian\n  set Penalty update = per "
+      "constraint\nend\n");
 }
