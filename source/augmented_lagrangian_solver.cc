@@ -80,12 +80,13 @@ namespace hrcontact
   }
 
   void
-  AugmentedLagrangianSolver::parse_parameters(ParameterHandler &prm)
+  AugmentedLagrangianSolver::parse_parameters(ParameterHandler &prm,
+                                              const Constants  &constants)
   {
     prm.enter_subsection("Augmented Lagrangian");
     initial_alpha =
       evaluate_constant_expression(prm.get("Initial penalty"),
-                                   {},
+                                   constants,
                                    "Augmented Lagrangian/Initial penalty");
     if (!(initial_alpha > 0))
       throw InputError(

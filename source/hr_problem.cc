@@ -91,7 +91,7 @@ namespace hrcontact
     scene.parse_parameters(prm);
     spaces.parse_parameters(prm);
     reduction.parse_parameters(prm);
-    contact_solver.parse_parameters(prm);
+    contact_solver.parse_parameters(prm, scene.constants);
     postprocessor.parse_parameters(prm, scene.constants);
     output.parse_parameters(prm);
   }

@@ -7,6 +7,7 @@
 
 #include <hrcontact/equilibrium_reduction.h>
 #include <hrcontact/equilibrium_system.h>
+#include <hrcontact/input.h>
 
 #include <ostream>
 #include <string>
@@ -50,7 +51,7 @@ namespace hrcontact
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm, const Constants &constants);
 
     /**
      * Solve. `load_scale` (a force) makes the relative tolerance and eps_k
