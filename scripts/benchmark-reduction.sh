@@ -9,29 +9,15 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -x build/hrcontact ] || { echo "build first: bash scripts/quickstart.sh example" >&2; exit 1; }
 ks=${*:-4 6 8 10 12}
+source scripts/run-variant.sh
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 echo "| cells | stress dofs | free rows n | dim(s0) m | wall s | peak RSS MiB |"
 echo "|---:|---:|---:|---:|---:|---:|"
 for k in $ks; do
-  cat > "$tmp/run.prm" <<PRM
-include $PWD/parameters/cantilever.prm
-subsection Geometry
-  set Grid arguments     = $((10 * k)), $k : 0, -0.5 : 10, 0.5 : true
-  set Global refinements = 0
-end
-subsection Output
-  set Output directory = $tmp/out
-  set Write solution   = false
-  set Print timing     = false
-end
-PRM
-  start=$(date +%s.%N)
-  /usr/bin/time -f "%M" -o "$tmp/rss" ./build/hrcontact "$tmp/run.prm" > "$tmp/log"
-  end=$(date +%s.%N)
-  s="$tmp/out/summary.txt"
-  get() { sed -n "s/^$1 = //p" "$s"; }
+  run_variant parameters/cantilever.prm "  set Grid arguments     = $((10 * k)), $k : 0, -0.5 : 10, 0.5 : true
+  set Global refinements = 0" "$tmp"
   printf "| %s | %s | %s | %s | %.1f | %d |\n" "$(get cells)" "$(get stress_dofs)" \
     "$(get free_rows)" "$(get self_equilibrated_stresses)" \
-    "$(echo "$end - $start" | bc -l)" "$(( $(cat "$tmp/rss") / 1024 ))"
+    "$seconds" "$rss_mib"
 done

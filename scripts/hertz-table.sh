@@ -8,28 +8,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -x build/hrcontact ] || { echo "build first: bash scripts/quickstart.sh example" >&2; exit 1; }
+source scripts/run-variant.sh
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 echo "| refinements | cells | u dofs | stress dofs | a (mm) | error a | p0 (GPa) | error p0 | updates | Newton steps | wall s | peak RSS MiB |"
 echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for r in ${*:-1 2 3 4}; do
-  cat > "$tmp/run.prm" <<PRM
-include $PWD/parameters/hertz.prm
-subsection Geometry
-  set Global refinements = $r
-end
-subsection Output
-  set Output directory = $tmp/out
-  set Write solution   = false
-  set Print timing     = false
-end
-PRM
-  start=$(date +%s.%N)
-  /usr/bin/time -f "%M" -o "$tmp/rss" ./build/hrcontact "$tmp/run.prm" > "$tmp/log"
-  end=$(date +%s.%N)
-  s="$tmp/out/summary.txt"
-  get() { sed -n "s/^$1 = //p" "$s"; }
-  calc() { awk "BEGIN { print $1 }"; }
+  run_variant parameters/hertz.prm "  set Global refinements = $r" "$tmp"
   printf "| %s | %s | %s | %s | %.4f | %+.2f %% | %.3f | %+.2f %% | %s | %s | %.1f | %d |\n" \
     "$r" "$(get cells)" "$(get displacement_dofs)" "$(get stress_dofs)" \
     "$(calc "$(get contact_half_width) * 1000")" \
@@ -37,5 +22,5 @@ PRM
     "$(calc "$(get peak_pressure) / 1e9")" \
     "$(calc "$(get relative_error_peak_pressure) * 100")" \
     "$(get iterations)" "$(get newton_steps)" \
-    "$(calc "$end - $start")" "$(( $(cat "$tmp/rss") / 1024 ))"
+    "$seconds" "$rss_mib"
 done
