@@ -1,7 +1,5 @@
 #include <deal.II/base/timer.h>
 
-#include <deal.II/lac/lapack_full_matrix.h>
-
 #include <hrcontact/augmented_lagrangian_solver.h>
 #include <hrcontact/input.h>
 
@@ -106,57 +104,18 @@ namespace hrcontact
                        "Maximum inner tolerance.");
   }
 
-  void
-  AugmentedLagrangianSolver::compute_p(const EquilibriumReduction &reduction)
-  {
-    const unsigned int nq = reduction.n_contact_rows();
-    const unsigned int m  = reduction.n_self_equilibrated();
-    p.resize(nq);
-    for (unsigned int i = 0; i < nq; ++i)
-      {
-        const double *q   = reduction.QR_row(i);
-        double        sum = reduction.contact_offset()[i];
-        for (unsigned int j = 0; j < m; ++j)
-          sum += q[j] * s0[j];
-        p[i] = sum;
-      }
-  }
-
   bool
-  AugmentedLagrangianSolver::solve(const EquilibriumSystem    &system,
-                                   const EquilibriumReduction &reduction,
-                                   const double                load_scale,
-                                   std::ostream               &log)
+  AugmentedLagrangianSolver::solve(const EquilibriumSystem &system,
+                                   NewtonStepPath          &path,
+                                   const double             load_scale,
+                                   std::ostream            &log)
   {
-    const unsigned int nq = reduction.n_contact_rows();
-    const unsigned int m  = reduction.n_self_equilibrated();
+    const unsigned int nq = system.contact_rows.size();
     std::vector<bool>  unilateral(nq);
     for (unsigned int i = 0; i < nq; ++i)
       unilateral[i] = system.rows[system.contact_rows[i]].unilateral;
 
     Timer timer;
-    // Z = M0^{-1} (QR)^T (m x nq) and S = QR Z (nq x nq), kept for the
-    // Woodbury solves: M0 does not change during the iteration.
-    std::vector<double> Z(static_cast<std::size_t>(m) * nq);
-    for (unsigned int i = 0; i < nq; ++i)
-      std::copy(reduction.QR_row(i),
-                reduction.QR_row(i) + m,
-                Z.begin() + static_cast<std::size_t>(i) * m);
-    reduction.solve_M0(Z.data(), nq);
-    FullMatrix<double> S(nq, nq);
-    for (unsigned int i = 0; i < nq; ++i)
-      for (unsigned int j = 0; j < nq; ++j)
-        {
-          const double *q   = reduction.QR_row(i);
-          const double *z   = Z.data() + static_cast<std::size_t>(j) * m;
-          double        sum = 0;
-          for (unsigned int k = 0; k < m; ++k)
-            sum += q[k] * z[k];
-          S(i, j) = sum;
-        }
-
-    const Vector<double> &b0      = reduction.linear_term();
-    const double          b0_norm = std::max(b0.l2_norm(), 1e-300);
     mu.assign(nq, 0.);
     alpha.assign(nq, initial_alpha);
     released.assign(nq, false);
@@ -169,9 +128,9 @@ namespace hrcontact
     converged          = false;
 
     // Step 0: trial solution, every constraint bilateral with w_n = g.
-    s0 = b0;
-    reduction.solve_M0(s0.data());
-    compute_p(reduction);
+    path.solve(released, mu, alpha, p);
+    // The contact force term the last solve balanced: [A](mu - alpha p).
+    std::vector<double> balanced(nq, 0.);
 
     double scale = std::abs(load_scale);
     for (unsigned int i = 0; i < nq; ++i)
@@ -271,82 +230,35 @@ namespace hrcontact
                      {eps_max, eps_previous, relative_pbar * relative_pbar}));
         eps_previous = eps_k;
 
-        // Step 3: Newton on s0 until ||grad|| <= eps_k ||grad at the start||.
-        newton_steps = 0;
-        Vector<double>            grad(m), M0s0(m), direction(m);
-        std::vector<unsigned int> previous_active;
-        double                    initial_grad_norm = 0;
+        // Step 3: Newton steps until the gradient, in contact coordinates
+        // e = [A](mu - alpha p) - balanced, falls by eps_k. A step that keeps
+        // the released set gives e = 0 exactly: the piece is quadratic.
+        newton_steps        = 0;
+        double initial_norm = 0;
         for (;;)
           {
-            compute_p(reduction);
-            std::vector<unsigned int> active;
+            std::vector<bool>   active(nq);
+            std::vector<double> e(nq), term(nq, 0.);
             for (unsigned int i = 0; i < nq; ++i)
-              if (unilateral[i] && p[i] > mu[i] / alpha[i])
-                active.push_back(i);
-            // A full Newton step that kept the released set is exact: the
-            // functional is quadratic on that piece. What gradient is left is
-            // round-off, whatever eps_k asks.
-            if (newton_steps > 0 && active == previous_active)
-              break;
-            previous_active = active;
-            // grad = -M0 s0 + b0 + sum_active q_i (mu_i - alpha_i p_i)
-            reduction.multiply_M0(s0, M0s0);
-            grad = b0;
-            grad -= M0s0;
-            for (const unsigned int i : active)
               {
-                const double  c = mu[i] - alpha[i] * p[i];
-                const double *q = reduction.QR_row(i);
-                for (unsigned int j = 0; j < m; ++j)
-                  grad[j] += c * q[j];
+                active[i] = unilateral[i] && p[i] > mu[i] / alpha[i];
+                if (active[i])
+                  term[i] = mu[i] - alpha[i] * p[i];
+                e[i] = term[i] - balanced[i];
               }
-            // Step 3's tolerance as a reduction of the gradient within this
-            // inner solve: unit free, and every update makes progress.
-            const double grad_norm = grad.l2_norm();
+            const double e_norm = norm_of(e);
             if (newton_steps == 0)
-              initial_grad_norm = grad_norm;
-            if (grad_norm <= eps_k * initial_grad_norm ||
-                grad_norm <= 1e-15 * b0_norm ||
+              initial_norm = e_norm;
+            if (e_norm == 0 ||
+                (newton_steps > 0 && e_norm <= eps_k * initial_norm) ||
                 newton_steps >= max_newton_steps)
               break;
-
-            // direction = H^{-1} grad, H = M0 + sum_active alpha_i q_i q_i^T:
-            // Woodbury with y = M0^{-1} grad,
-            // direction = y - Z_A (alpha_A^{-1} + S_AA)^{-1} (QR_A y).
-            direction = grad;
-            reduction.solve_M0(direction.data());
-            if (!active.empty())
-              {
-                const unsigned int       na = active.size();
-                LAPACKFullMatrix<double> W(na, na);
-                Vector<double>           rhs(na);
-                for (unsigned int a = 0; a < na; ++a)
-                  {
-                    for (unsigned int b = 0; b < na; ++b)
-                      W(a, b) = S(active[a], active[b]);
-                    W(a, a) += 1. / alpha[active[a]];
-                    const double *q   = reduction.QR_row(active[a]);
-                    double        sum = 0;
-                    for (unsigned int j = 0; j < m; ++j)
-                      sum += q[j] * direction[j];
-                    rhs[a] = sum;
-                  }
-                W.set_property(LAPACKSupport::symmetric);
-                W.compute_cholesky_factorization();
-                W.solve(rhs);
-                for (unsigned int a = 0; a < na; ++a)
-                  {
-                    const double *z =
-                      Z.data() + static_cast<std::size_t>(active[a]) * m;
-                    for (unsigned int j = 0; j < m; ++j)
-                      direction[j] -= rhs[a] * z[j];
-                  }
-              }
-            s0 += direction;
+            path.solve(active, mu, alpha, p);
+            for (unsigned int i = 0; i < nq; ++i)
+              balanced[i] = active[i] ? mu[i] - alpha[i] * p[i] : 0.;
             ++newton_steps;
             ++total_newton_steps;
           }
-        compute_p(reduction);
       }
     log << "  augmented Lagrangian "
         << (converged ? "converged" : "did NOT converge") << " after "

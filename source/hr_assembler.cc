@@ -91,6 +91,8 @@ namespace hrcontact
     system.load.reinit(dh_u.n_dofs());
     system.cell_stress_dofs.assign(dh_s.get_triangulation().n_active_cells(),
                                    {});
+    system.cell_displacement_dofs.assign(
+      dh_s.get_triangulation().n_active_cells(), {});
     system.cell_flexibility.assign(dh_s.get_triangulation().n_active_cells(),
                                    FullMatrix<double>());
 
@@ -198,9 +200,10 @@ namespace hrcontact
               if (Bc(i, j) != 0)
                 system.B.add(du[i], ds[j], Bc(i, j));
           }
-        const unsigned int index       = cu->active_cell_index();
-        system.cell_stress_dofs[index] = ds;
-        system.cell_flexibility[index] = Fc;
+        const unsigned int index             = cu->active_cell_index();
+        system.cell_stress_dofs[index]       = ds;
+        system.cell_displacement_dofs[index] = du;
+        system.cell_flexibility[index]       = Fc;
         ++cs;
       }
   }

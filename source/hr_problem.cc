@@ -2,6 +2,7 @@
 
 #include <hrcontact/hr_assembler.h>
 #include <hrcontact/hr_problem.h>
+#include <hrcontact/newton_step.h>
 
 #include <algorithm>
 #include <chrono>
@@ -9,6 +10,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <limits>
+#include <memory>
 #include <sstream>
 
 namespace hrcontact
@@ -122,38 +124,65 @@ namespace hrcontact
         << system.contact_rows.size() << " normal (Q), "
         << system.prescribed_rows.size() << " prescribed (H)" << std::endl;
 
+    // The path of the Newton steps: the paper's dense null-space reduction,
+    // or the condensed sparse system once the dense one would be too big.
+    {
+      const double n = system.free_rows.size(), tau = system.n_stress_dofs;
+      const double m           = std::max(0., tau - n);
+      const double dense_bytes = 8 * (tau * n + n * m + 2 * m * m);
+      solution_path            = reduction.path;
+      if (solution_path == "automatic")
+        solution_path = (dense_bytes <= reduction.automatic_dense_limit) ?
+                          "null-space" :
+                          "condensed";
+      log << "  Newton-step path: " << solution_path
+          << " (dense reduction would "
+          << "need about " << std::setprecision(3) << dense_bytes / 1e9
+          << " GB)" << std::endl;
+    }
+    std::unique_ptr<NewtonStepPath> path;
     {
       TimerOutput::Scope t(timer, "equilibrium reduction");
-      reduction.initialize(system, &log);
+      if (solution_path == "null-space")
+        {
+          reduction.initialize(system, &log);
+          path = std::make_unique<NullSpaceStep>(reduction);
+        }
+      else
+        path = std::make_unique<CondensedStep>(system);
     }
     has_contact = false;
     for (const unsigned int r : system.contact_rows)
       has_contact |= system.rows[r].unilateral;
-    contact_w.assign(system.contact_rows.size(), 0.);
+    const unsigned int nq = system.contact_rows.size();
+    contact_w.assign(nq, 0.);
     if (has_contact)
       {
         TimerOutput::Scope t(timer, "augmented Lagrangian");
         double             load_scale = 0;
         for (unsigned int i = 0; i < system.load.size(); ++i)
           load_scale = std::max(load_scale, std::abs(system.load[i]));
-        contact_solver.solve(system, reduction, load_scale, log);
-        reduction.stress_from_s0(contact_solver.s0, stress);
+        contact_solver.solve(system, *path, load_scale, log);
         // After the last multiplier update mu = w_n - g (pressed: mu = 0).
-        for (unsigned int k = 0; k < contact_w.size(); ++k)
+        for (unsigned int k = 0; k < nq; ++k)
           contact_w[k] =
             system.rows[system.contact_rows[k]].value + contact_solver.mu[k];
       }
     else
       {
-        TimerOutput::Scope t(timer, "solve");
-        reduction.solve_bilateral(stress);
-        for (unsigned int k = 0; k < contact_w.size(); ++k)
+        TimerOutput::Scope  t(timer, "solve");
+        std::vector<double> p;
+        path->solve(std::vector<bool>(nq, false),
+                    std::vector<double>(nq, 0.),
+                    std::vector<double>(nq, 1.),
+                    p);
+        for (unsigned int k = 0; k < nq; ++k)
           contact_w[k] = system.rows[system.contact_rows[k]].value;
       }
     {
       TimerOutput::Scope t(timer, "displacements");
-      row_values = reduction.row_displacements(stress, contact_w);
-      system.displacements_from_row_values(row_values, displacement);
+      path->stresses(stress);
+      path->displacements(contact_w, displacement);
     }
 
     contact_reactions.clear();
@@ -186,7 +215,10 @@ namespace hrcontact
     summary.add("free_rows", system.free_rows.size());
     summary.add("normal_rows", system.contact_rows.size());
     summary.add("prescribed_rows", system.prescribed_rows.size());
-    summary.add("self_equilibrated_stresses", reduction.n_self_equilibrated());
+    summary.add("solution_path", solution_path);
+    if (solution_path == "null-space")
+      summary.add("self_equilibrated_stresses",
+                  reduction.n_self_equilibrated());
     summary.add("contact_constraints",
                 has_contact ? contact_solver.p.size() : std::size_t(0));
     summary.add("iterations", has_contact ? contact_solver.history.size() : 0);

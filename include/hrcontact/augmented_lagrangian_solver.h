@@ -5,9 +5,9 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <hrcontact/equilibrium_reduction.h>
 #include <hrcontact/equilibrium_system.h>
 #include <hrcontact/input.h>
+#include <hrcontact/newton_step.h>
 
 #include <ostream>
 #include <string>
@@ -41,9 +41,12 @@ namespace hrcontact
    * alpha pbar (eq. 48), penalty update alpha <- rho alpha if ||pbar|| >
    * delta ||pbar_prev|| (eq. 49), stop when ||pbar|| < tol.
    *
-   * The Newton systems are solved with the Cholesky factor of M0 = R^T F R,
-   * computed once, and the Woodbury identity over the released constraints:
-   * exact, and k x k work per step instead of a new m x m factorisation.
+   * Each Newton step is an exact solve of the quadratic piece selected by the
+   * released set, by either NewtonStepPath (null-space or condensed); the
+   * solver only sees p, so both paths take the same decisions. After an
+   * exact solve with the set A_old, the gradient of eq. 46 is (QR)^T e with
+   * e_i = [i in A](mu_i - alpha_i p_i) - [i in A_old](mu_old_i - alpha_old_i
+   * p_i): eps_k is applied to |e|, the gradient in contact coordinates.
    */
   class AugmentedLagrangianSolver
   {
@@ -54,14 +57,15 @@ namespace hrcontact
     parse_parameters(dealii::ParameterHandler &prm, const Constants &constants);
 
     /**
-     * Solve. `load_scale` (a force) makes the relative tolerance and eps_k
-     * unit free. Returns true when converged.
+     * Solve with the given Newton-step path. `load_scale` (a force) makes the
+     * relative tolerance and eps_k unit free. Returns true when converged;
+     * the path then holds the final stresses and displacements.
      */
     bool
-    solve(const EquilibriumSystem    &system,
-          const EquilibriumReduction &reduction,
-          const double                load_scale,
-          std::ostream               &log);
+    solve(const EquilibriumSystem &system,
+          NewtonStepPath          &path,
+          const double             load_scale,
+          std::ostream            &log);
 
     // Parameters (section 4.4, Step 1).
     double       initial_alpha  = 1e-3;
@@ -73,7 +77,6 @@ namespace hrcontact
     unsigned int max_updates = 100, max_newton_steps = 50;
 
     // Results, one entry per Q row (bilateral rows: mu = 0, always pressed).
-    dealii::Vector<double>               s0;
     std::vector<double>                  p, mu, alpha;
     std::vector<bool>                    released;
     std::vector<AugmentedLagrangianStep> history;
@@ -85,11 +88,6 @@ namespace hrcontact
     unsigned int                     total_newton_steps = 0;
     double                           final_norm_pbar    = 0;
     double                           tolerance_used     = 0;
-
-  private:
-    /** p = QR s0 + a. */
-    void
-    compute_p(const EquilibriumReduction &reduction);
   };
 } // namespace hrcontact
 

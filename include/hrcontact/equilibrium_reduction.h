@@ -130,7 +130,20 @@ namespace hrcontact
                    dealii::Vector<double>       &s) const;
     /** @} */
 
+    /** Nodal displacements of eq. 50-51 (row_displacements, unrotated). */
+    void
+    system_displacements(const dealii::Vector<double> &s,
+                         const std::vector<double>    &contact_w,
+                         dealii::Vector<double>       &u) const
+    {
+      system->displacements_from_row_values(row_displacements(s, contact_w), u);
+    }
+
     double pivot_tolerance = 1e-9;
+    /** automatic, null-space or condensed (chosen by HRProblem). */
+    std::string path = "automatic";
+    /** automatic picks null-space while its dense matrices fit in this. */
+    double automatic_dense_limit = 2e9;
 
   private:
     unsigned int           n_q = 0;

@@ -56,7 +56,9 @@ namespace hrcontact
     unsigned int n_stress_dofs       = 0;
 
     std::vector<std::vector<dealii::types::global_dof_index>> cell_stress_dofs;
-    std::vector<dealii::FullMatrix<double>>                   cell_flexibility;
+    std::vector<std::vector<dealii::types::global_dof_index>>
+                                            cell_displacement_dofs;
+    std::vector<dealii::FullMatrix<double>> cell_flexibility;
 
     dealii::SparsityPattern      sparsity;
     dealii::SparseMatrix<double> B;

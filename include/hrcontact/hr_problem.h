@@ -73,7 +73,8 @@ namespace hrcontact
 
     dealii::Vector<double> stress;
     dealii::Vector<double> displacement;
-    std::vector<double>    row_values;
+    /** "null-space" or "condensed": the path the run took. */
+    std::string solution_path;
     /** True when the scene has unilateral contact constraints. */
     bool has_contact = false;
     /** Normal displacement w_n per Q row (g + mu after the last update). */

@@ -1,0 +1,114 @@
+#ifndef hrcontact_newton_step_h
+#define hrcontact_newton_step_h
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <hrcontact/equilibrium_reduction.h>
+#include <hrcontact/equilibrium_system.h>
+
+#include <vector>
+
+namespace hrcontact
+{
+  /**
+   * One exact Newton step of the augmented Lagrangian (design.md section 4):
+   * the maximiser of the quadratic piece of eq. 44 selected by a released
+   * set. Pressed and bilateral Q rows hold w_n = g; released rows are springs
+   * of compliance alpha_i anchored at g_i + mu_i. The two implementations
+   * give the same iterates in exact arithmetic.
+   */
+  class NewtonStepPath
+  {
+  public:
+    virtual ~NewtonStepPath() = default;
+
+    /** Solve the piece; return p = Q s - q for every Q row. */
+    virtual void
+    solve(const std::vector<bool>   &released,
+          const std::vector<double> &mu,
+          const std::vector<double> &alpha,
+          std::vector<double>       &p) = 0;
+
+    /** Stresses of the last solve. */
+    virtual void
+    stresses(dealii::Vector<double> &s) const = 0;
+
+    /**
+     * Nodal displacements of the last solve, given the normal displacements
+     * of the Q rows (g + mu after the last multiplier update).
+     */
+    virtual void
+    displacements(const std::vector<double> &contact_w,
+                  dealii::Vector<double>    &u) const = 0;
+  };
+
+  /**
+   * The paper's path (section 4.2-4.3) on the reduced unknowns s0:
+   * (M0 + sum_released alpha_i q_i q_i^T) s0 = b0 + sum_released q_i (mu_i -
+   * alpha_i a_i), q_i the rows of Q R. M0's Cholesky factor comes from the
+   * reduction; the released rows are a low-rank update solved by the
+   * Woodbury identity with Z = M0^{-1} (QR)^T and S = QR Z, computed once.
+   */
+  class NullSpaceStep : public NewtonStepPath
+  {
+  public:
+    explicit NullSpaceStep(const EquilibriumReduction &reduction);
+
+    void
+    solve(const std::vector<bool>   &released,
+          const std::vector<double> &mu,
+          const std::vector<double> &alpha,
+          std::vector<double>       &p) override;
+    void
+    stresses(dealii::Vector<double> &s) const override;
+    void
+    displacements(const std::vector<double> &contact_w,
+                  dealii::Vector<double>    &u) const override;
+
+  private:
+    const EquilibriumReduction &reduction;
+    std::vector<double>         Z;
+    dealii::FullMatrix<double>  S;
+    dealii::Vector<double>      s0;
+  };
+
+  /**
+   * The condensed path (design.md section 4b): the stresses are eliminated
+   * cell by cell (F is block diagonal), K = B F^{-1} B^T is a sparse SPD
+   * displacement-like matrix; prescribed and pressed rows become
+   * AffineConstraints (d . u = value), released rows add springs 1/alpha_i
+   * along their direction with the anchor g_i + mu_i; a sparse direct solve
+   * (UMFPACK) gives u, then s = F^{-1} B^T u per cell. Memory and work grow
+   * about linearly with the mesh, unlike the dense null-space path.
+   */
+  class CondensedStep : public NewtonStepPath
+  {
+  public:
+    explicit CondensedStep(const EquilibriumSystem &system);
+
+    void
+    solve(const std::vector<bool>   &released,
+          const std::vector<double> &mu,
+          const std::vector<double> &alpha,
+          std::vector<double>       &p) override;
+    void
+    stresses(dealii::Vector<double> &s) const override;
+    void
+    displacements(const std::vector<double> &contact_w,
+                  dealii::Vector<double>    &u) const override;
+
+  private:
+    const EquilibriumSystem     &system;
+    dealii::SparsityPattern      sparsity;
+    dealii::SparseMatrix<double> K;
+    /** F_c^{-1} B_c^T per cell (stress dofs x displacement dofs). */
+    std::vector<dealii::FullMatrix<double>> recovery;
+    dealii::Vector<double>                  u, s;
+  };
+} // namespace hrcontact
+
+#endif

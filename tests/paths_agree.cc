@@ -1,0 +1,70 @@
+// The two exact Newton-step paths (design.md section 4): the paper's
+// null-space reduction and the condensed sparse system must give the same
+// augmented Lagrangian history: the same alpha sequence, the same released
+// set at every multiplier update, and p equal to 1e-9 relative (lift-off and
+// Hertz at a small size); and without contact the same stresses and
+// displacements (cantilever).
+
+#include "tests.h"
+
+template <int dim>
+std::unique_ptr<hrcontact::HRProblem<dim>>
+run(const std::string &scene, const std::string &extra, const std::string &path)
+{
+  return hrcontact_tests::solve_from_text<dim>(
+    hrcontact_tests::read_file(std::string(SOURCE_DIR) + "/../parameters/" +
+                               scene) +
+    extra + "subsection Equilibrium reduction\n  set Path = " + path +
+    "\nend\nsubsection Output\n  set Write solution = false\n"
+    "  set Output directory = results\nend\n");
+}
+
+void
+compare_contact(const std::string &scene, const std::string &extra)
+{
+  const auto  a  = run<2>(scene, extra, "null-space");
+  const auto  b  = run<2>(scene, extra, "condensed");
+  const auto &ha = a->contact_solver, &hb = b->contact_solver;
+  bool        same_alpha = ha.alpha_history.size() == hb.alpha_history.size();
+  bool        same_sets  = same_alpha;
+  double      p_diff = 0, p_max = 0;
+  for (unsigned int k = 0; same_alpha && k < ha.alpha_history.size(); ++k)
+    {
+      same_alpha &= (ha.alpha_history[k] == hb.alpha_history[k]);
+      same_sets &= (ha.released_history[k] == hb.released_history[k]);
+      for (unsigned int i = 0; i < ha.p_history[k].size(); ++i)
+        {
+          p_max = std::max(p_max, std::abs(ha.p_history[k][i]));
+          p_diff =
+            std::max(p_diff, std::abs(ha.p_history[k][i] - hb.p_history[k][i]));
+        }
+    }
+  std::cout
+    << scene << ": " << ha.history.size() << " and " << hb.history.size()
+    << " multiplier updates, " << ha.total_newton_steps << " and "
+    << hb.total_newton_steps
+    << " Newton steps\n  same alpha sequence: " << (same_alpha ? "yes" : "NO")
+    << "\n  same released set at every update: " << (same_sets ? "yes" : "NO")
+    << "\n  max |p_null - p_condensed| / max |p| over all updates < 1e-9: "
+    << hrcontact_tests::check(p_diff / p_max, 1e-9) << std::endl;
+}
+
+int
+main()
+{
+  compare_contact("lift-off.prm", "");
+  compare_contact("hertz.prm",
+                  "subsection Geometry\n  set Global refinements = 3\nend\n");
+  const auto             a  = run<2>("cantilever.prm", "", "null-space");
+  const auto             b  = run<2>("cantilever.prm", "", "condensed");
+  dealii::Vector<double> ds = a->stress, du = a->displacement;
+  ds -= b->stress;
+  du -= b->displacement;
+  std::cout
+    << "cantilever.prm (no contact):\n  stresses agree to 1e-10: "
+    << hrcontact_tests::check(ds.linfty_norm() / a->stress.linfty_norm(), 1e-10)
+    << "\n  displacements agree to 1e-10: "
+    << hrcontact_tests::check(du.linfty_norm() / a->displacement.linfty_norm(),
+                              1e-10)
+    << std::endl;
+}
