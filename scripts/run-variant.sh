@@ -1,16 +1,14 @@
 # Sourced by the benchmark scripts: run a scene with overrides, timed.
-#   run_variant SCENE.prm "geometry overrides" WORKDIR
-# writes WORKDIR/run.prm (include SCENE + the Geometry overrides + quiet
+#   run_variant SCENE.prm "parameter file lines" WORKDIR
+# writes WORKDIR/run.prm (include SCENE + the given lines + quiet
 # output into WORKDIR/out), runs it, and sets: summary (path of summary.txt),
 # seconds (wall time), rss_mib (peak resident memory). get KEY reads the
 # summary, calc EXPR evaluates arithmetic (scientific notation allowed).
 run_variant() {
-  local scene=$1 geometry=$2 work=$3
+  local scene=$1 overrides=$2 work=$3
   cat > "$work/run.prm" <<PRM
 include $PWD/$scene
-subsection Geometry
-$geometry
-end
+$overrides
 subsection Output
   set Output directory = $work/out
   set Write solution   = false
