@@ -442,14 +442,6 @@ namespace hrcontact
   }
 
   void
-  EquilibriumReduction::solve_bilateral(Vector<double> &s) const
-  {
-    Vector<double> s0 = b0;
-    solve_M0(s0.data());
-    stress_from_s0(s0, s);
-  }
-
-  void
   EquilibriumReduction::solve_M0(double *x, const unsigned int n_rhs) const
   {
     if (m == 0)

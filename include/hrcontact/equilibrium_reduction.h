@@ -73,14 +73,6 @@ namespace hrcontact
     }
 
     /**
-     * Maximise the complementary energy (eq. 44 without regularisation) when
-     * every Q row is bilateral, w_n = g: solve R^T F R s0 = R^T(-F t + H^T
-     * u-hat + Q^T g). Returns the stresses s.
-     */
-    void
-    solve_bilateral(dealii::Vector<double> &s) const;
-
-    /**
      * Displacements from the stresses (eq. 50-51): C1^T u_C = (F s - Q^T w -
      * H^T u-hat)_1, with w the normal displacements of the Q rows (one per
      * contact row) and u-hat the prescribed values. Returns one value per
