@@ -31,6 +31,16 @@ namespace hrcontact
                       Patterns::Bool(),
                       "Write solution.vtu (displacement, stress tensor, "
                       "principal stresses, von Mises) for ParaView.");
+    prm.declare_entry("Print timing",
+                      "true",
+                      Patterns::Bool(),
+                      "Print a table of wall times at the end of the run "
+                      "(tests switch it off to keep their output "
+                      "reproducible).");
+    prm.leave_subsection();
+
+    // Contact postprocessing lives with the other postprocessing entries.
+    prm.enter_subsection("Postprocess");
     prm.declare_entry(
       "Hertz load",
       "",
@@ -52,12 +62,6 @@ namespace hrcontact
       "gets its normal displacement and reaction at every multiplier update "
       "written to contact-history.csv (k, node, x, y, w_n, p_n, alpha, "
       "status).");
-    prm.declare_entry("Print timing",
-                      "true",
-                      Patterns::Bool(),
-                      "Print a table of wall times at the end of the run "
-                      "(tests switch it off to keep their output "
-                      "reproducible).");
     prm.leave_subsection();
   }
 
@@ -65,9 +69,11 @@ namespace hrcontact
   OutputSettings::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    directory     = prm.get("Output directory");
-    write_vtu     = prm.get_bool("Write solution");
-    print_timing  = prm.get_bool("Print timing");
+    directory    = prm.get("Output directory");
+    write_vtu    = prm.get_bool("Write solution");
+    print_timing = prm.get_bool("Print timing");
+    prm.leave_subsection();
+    prm.enter_subsection("Postprocess");
     hertz_load    = prm.get("Hertz load");
     hertz_radius  = prm.get("Hertz radius");
     tracked_nodes = prm.get("Tracked contact nodes");
@@ -405,10 +411,10 @@ namespace hrcontact
     // model's pressed zone starts at the symmetry plane.
     const double P       = evaluate_constant_expression(output.hertz_load,
                                                   scene.constants,
-                                                  "Output/Hertz load");
+                                                  "Postprocess/Hertz load");
     const double R       = evaluate_constant_expression(output.hertz_radius,
                                                   scene.constants,
-                                                  "Output/Hertz radius");
+                                                  "Postprocess/Hertz radius");
     const double nu      = scene.poisson_ratio;
     const double E_star  = scene.youngs_modulus / (1 - nu * nu);
     const double a_hertz = std::sqrt(4 * P * R / (numbers::PI * E_star));
@@ -475,15 +481,15 @@ namespace hrcontact
           {
             const auto coords = split_and_trim(text, ',');
             if (coords.size() != dim)
-              throw InputError("Output/Tracked contact nodes: '" + text +
+              throw InputError("Postprocess/Tracked contact nodes: '" + text +
                                "' is not a point with " + std::to_string(dim) +
                                " coordinates.");
             std::array<double, 3> x = {{0, 0, 0}};
             for (unsigned int d = 0; d < dim; ++d)
-              x[d] =
-                evaluate_constant_expression(coords[d],
-                                             scene.constants,
-                                             "Output/Tracked contact nodes");
+              x[d] = evaluate_constant_expression(
+                coords[d],
+                scene.constants,
+                "Postprocess/Tracked contact nodes");
             double       best    = std::numeric_limits<double>::max();
             unsigned int nearest = order.front();
             for (const unsigned int k : order)
