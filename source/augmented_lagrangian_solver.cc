@@ -70,6 +70,15 @@ namespace hrcontact
                       "Iteration limit: reaching it is an error (exit code 3), "
                       "but all result files are written with converged = "
                       "false.");
+    prm.declare_entry(
+      "Maximum penalty growth",
+      "1e16",
+      Patterns::Double(1),
+      "alpha may grow (eq. 49) up to this factor times Initial penalty. "
+      "Needing more means the iteration is not converging at any penalty the "
+      "mesh can carry (typically Initial penalty far too large against the "
+      "nodal compliance): the run stops with an error naming the cause, and "
+      "writes its results with converged = false.");
     prm.declare_entry("Maximum Newton steps",
                       "50",
                       Patterns::Integer(1),
@@ -98,6 +107,7 @@ namespace hrcontact
     relative_tolerance = prm.get_double("Relative tolerance");
     max_updates        = prm.get_integer("Maximum multiplier updates");
     max_newton_steps   = prm.get_integer("Maximum Newton steps");
+    max_penalty_growth = prm.get_double("Maximum penalty growth");
     prm.leave_subsection();
     if (eps_min > eps_max)
       throw InputError("Augmented Lagrangian: Minimum inner tolerance exceeds "
@@ -126,6 +136,7 @@ namespace hrcontact
     released_history.clear();
     total_newton_steps = 0;
     converged          = false;
+    diverged           = false;
 
     // Step 0: trial solution, every constraint bilateral with w_n = g.
     path.solve(released, mu, alpha, p);
@@ -205,19 +216,43 @@ namespace hrcontact
           }
         if (k >= max_updates)
           break;
+        // A released spring far softer than the mesh (alpha much larger than
+        // the nodal compliance) leaves the body all but unsupported: the
+        // solves lose every digit and ||pbar|| explodes. Stop, do not iterate
+        // on garbage.
+        if (!std::isfinite(norm) || norm > 1e6 * force_scale)
+          {
+            diverged = true;
+            break;
+          }
 
-        // Step 5: penalty update (eq. 49).
+        // Step 5: penalty update (eq. 49), within the allowed growth.
         if (k > 1)
           {
+            const double alpha_cap = max_penalty_growth * initial_alpha;
+            bool         capped    = false;
             if (per_constraint)
               {
                 for (unsigned int i = 0; i < nq; ++i)
                   if (std::abs(pbar[i]) > delta * std::abs(pbar_previous[i]))
-                    alpha[i] *= rho;
+                    {
+                      capped |= (rho * alpha[i] > alpha_cap);
+                      alpha[i] *= rho;
+                    }
               }
             else if (norm > delta * norm_previous)
               for (double &a : alpha)
-                a *= rho;
+                {
+                  capped |= (rho * a > alpha_cap);
+                  a *= rho;
+                }
+            if (capped)
+              {
+                for (double &a : alpha)
+                  a = std::min(a, alpha_cap);
+                diverged = true;
+                break;
+              }
           }
         norm_previous = norm;
         pbar_previous = pbar;

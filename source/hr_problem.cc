@@ -210,6 +210,13 @@ namespace hrcontact
   void
   HRProblem<dim>::output_results(std::ostream &log)
   {
+    // Never write non-finite fields: stop before the first file instead.
+    for (const double v : displacement)
+      if (!std::isfinite(v))
+        throw NotConvergedError(
+          "the displacements are not finite (the solver diverged); no result "
+          "file was written. Reduce Augmented Lagrangian/Initial penalty, or "
+          "check the supports.");
     TimerOutput::Scope t(timer, "postprocess and output");
     summary = Summary();
     summary.add("dimension", dim);
@@ -552,6 +559,23 @@ namespace hrcontact
     output_results(log);
     if (output.print_timing)
       timer.print_summary();
+    if (has_contact && contact_solver.diverged)
+      {
+        std::ostringstream s;
+        s << "the augmented Lagrangian iteration stopped at multiplier update "
+          << contact_solver.history.size() << " without converging: ||pbar|| = "
+          << contact_solver.final_norm_pbar
+          << " either exceeds a million times the load scale or would need "
+             "alpha beyond Maximum penalty growth x Initial penalty (alpha is "
+          << contact_solver.alpha.front()
+          << "). The usual cause is an Initial penalty far from the nodal "
+             "compliance of the mesh: far larger, the released springs no "
+             "longer hold the body and the solves lose their digits; far "
+             "smaller, alpha cannot grow enough. Adjust Augmented "
+             "Lagrangian/Initial penalty. Results were written with "
+             "converged = false.";
+        throw NotConvergedError(s.str());
+      }
     if (has_contact && !contact_solver.converged)
       {
         std::ostringstream s;

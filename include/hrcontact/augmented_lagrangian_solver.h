@@ -75,6 +75,7 @@ namespace hrcontact
     double       eps_min = 1e-12, eps_max = 1e-2;
     double       absolute_tolerance = 0, relative_tolerance = 1e-10;
     unsigned int max_updates = 100, max_newton_steps = 50;
+    double       max_penalty_growth = 1e16;
 
     // Results, one entry per Q row (bilateral rows: mu = 0, always pressed).
     std::vector<double>                  p, mu, alpha;
@@ -84,10 +85,13 @@ namespace hrcontact
      * w_n = g + mu), alpha used, and the released flags. */
     std::vector<std::vector<double>> p_history, mu_history, alpha_history;
     std::vector<std::vector<bool>>   released_history;
-    bool                             converged          = false;
-    unsigned int                     total_newton_steps = 0;
-    double                           final_norm_pbar    = 0;
-    double                           tolerance_used     = 0;
+    bool                             converged = false;
+    /** ||pbar|| became non-finite or exceeded 1e6 x the load scale, or alpha
+     * would grow beyond max_penalty_growth x initial_alpha. */
+    bool         diverged           = false;
+    unsigned int total_newton_steps = 0;
+    double       final_norm_pbar    = 0;
+    double       tolerance_used     = 0;
   };
 } // namespace hrcontact
 
