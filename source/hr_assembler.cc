@@ -58,7 +58,7 @@ namespace hrcontact
     FEFaceValues<dim>     fv_face(fe_u,
                               face_quadrature,
                               update_values | update_quadrature_points |
-                                update_JxW_values);
+                                update_normal_vectors | update_JxW_values);
 
     const unsigned int n_u = fe_u.n_dofs_per_cell();
     const unsigned int n_s = fe_s.n_dofs_per_cell();
@@ -99,7 +99,7 @@ namespace hrcontact
     std::vector<types::global_dof_index> du(n_u), ds(n_s);
     FullMatrix<double>                   Bc(n_u, n_s);
     Vector<double>                       fc(n_u);
-    Vector<double>                       force(dim);
+    Vector<double>                       force(dim), pressure(dim);
     auto                                 cs = dh_s.begin_active();
     for (const auto &cu : dh_u.active_cell_iterators())
       {
@@ -169,13 +169,27 @@ namespace hrcontact
         for (const auto f : cu->face_indices())
           if (cu->face(f)->at_boundary())
             {
-              const auto t = scene.tractions.find(cu->face(f)->boundary_id());
-              if (t == scene.tractions.end())
+              const types::boundary_id id = cu->face(f)->boundary_id();
+              const auto               t  = scene.tractions.find(id);
+              const auto               pp = scene.projected_pressures.find(id);
+              if (t == scene.tractions.end() &&
+                  pp == scene.projected_pressures.end())
                 continue;
               fv_face.reinit(cu, f);
               for (unsigned int q = 0; q < face_quadrature.size(); ++q)
                 {
-                  t->second->vector_value(fv_face.quadrature_point(q), force);
+                  force = 0;
+                  if (t != scene.tractions.end())
+                    t->second->vector_value(fv_face.quadrature_point(q), force);
+                  if (pp != scene.projected_pressures.end())
+                    {
+                      // t_k = -p_k n_k: each pressure on its projection.
+                      pp->second->vector_value(fv_face.quadrature_point(q),
+                                               pressure);
+                      const Tensor<1, dim> n = fv_face.normal_vector(q);
+                      for (unsigned int d = 0; d < dim; ++d)
+                        force(d) -= pressure(d) * n[d];
+                    }
                   for (unsigned int i = 0; i < n_u; ++i)
                     {
                       const unsigned int a =
@@ -247,6 +261,7 @@ namespace hrcontact
     std::vector<std::vector<Tensor<1, dim>>> face_normals(n_nodes);
     std::vector<double>                      gap(n_nodes, 0.);
     std::vector<bool>                        has_normal(n_nodes, false);
+    std::vector<bool> normal_is_unilateral(n_nodes, false);
     // Unilateral contact: the obstacle's normal and the gap, per node.
     std::vector<int>            obstacle_of_node(n_nodes, -1);
     std::vector<Tensor<1, dim>> obstacle_normal(n_nodes);
@@ -313,8 +328,14 @@ namespace hrcontact
                   (ob->second.point - node_points[node]) * ob->second.normal;
               }
 
-          const auto nd = scene.normal_displacements.find(id);
-          if (nd != scene.normal_displacements.end())
+          // Bilateral normal constraints and unilateral boundary supports
+          // share the node normal (area-weighted face normals).
+          auto       nd         = scene.normal_displacements.find(id);
+          const bool is_support = (nd == scene.normal_displacements.end());
+          if (is_support)
+            nd = scene.boundary_supports.find(id);
+          if (nd != (is_support ? scene.boundary_supports.end() :
+                                  scene.normal_displacements.end()))
             {
               fv_face.reinit(cell, f);
               const Tensor<1, dim> n = fv_face.normal_vector(0);
@@ -324,13 +345,22 @@ namespace hrcontact
                     node_of_vertex[cell->face(f)->vertex_index(v)];
                   normal_sum[node] += n * fv_face.JxW(0);
                   face_normals[node].push_back(n);
-                  gap[node]        = nd->second->value(node_points[node]);
-                  has_normal[node] = true;
+                  gap[node] = nd->second->value(node_points[node]);
+                  if (has_normal[node] &&
+                      normal_is_unilateral[node] != is_support)
+                    throw InputError(
+                      "Supports: " + system.describe_node(node) +
+                      " has both a bilateral normal constraint and a "
+                      "unilateral boundary support.");
+                  has_normal[node]           = true;
+                  normal_is_unilateral[node] = is_support;
                   if (!std::isfinite(gap[node]))
                     throw InputError(
-                      "Supports/Normal displacements: the value for boundary " +
-                      std::to_string(id) + " is not finite at " +
-                      system.describe_node(node) + ".");
+                      std::string(is_support ?
+                                    "Contact/Boundary supports" :
+                                    "Supports/Normal displacements") +
+                      ": the value for boundary " + std::to_string(id) +
+                      " is not finite at " + system.describe_node(node) + ".");
                 }
             }
         }
@@ -372,18 +402,21 @@ namespace hrcontact
             }
         if (has_normal[node] && obstacle_of_node[node] >= 0)
           throw InputError("Supports: " + system.describe_node(node) +
-                           " has both a bilateral normal constraint and an "
-                           "obstacle.");
+                           " has both a normal constraint (or boundary "
+                           "support) and an obstacle.");
         if (has_normal[node] || obstacle_of_node[node] >= 0)
           {
-            const bool           unilateral = (obstacle_of_node[node] >= 0);
+            const bool unilateral =
+              (obstacle_of_node[node] >= 0) || normal_is_unilateral[node];
             const Tensor<1, dim> n =
-              unilateral ? obstacle_normal[node] :
-                           normal_sum[node] / normal_sum[node].norm();
+              (obstacle_of_node[node] >= 0) ?
+                obstacle_normal[node] :
+                normal_sum[node] / normal_sum[node].norm();
             for (const auto &nf : face_normals[node])
               if (nf * n < std::cos(numbers::PI / 4))
                 throw InputError(
-                  "Supports/Normal displacements: " +
+                  "Supports/Normal displacements or Contact/Boundary "
+                  "supports: " +
                   system.describe_node(node) +
                   " is a corner between faces whose normals differ by more "
                   "than 45 degrees; one normal cannot represent it. Prescribe "

@@ -62,6 +62,23 @@ namespace hrcontact
       "gets its normal displacement and reaction at every multiplier update "
       "written to contact-history.csv (k, node, x, y, w_n, p_n, alpha, "
       "status).");
+    prm.declare_entry(
+      "Lining sections",
+      "120",
+      Patterns::Integer(2, 100000),
+      "tunnel_lining grids: number of intervals between section stations "
+      "along the mid-line (equally spaced in arc length; stations in the "
+      "short stretch around the arcs' joint are skipped). lining.csv gets N, "
+      "V, M and the displacement at each station.");
+    prm.declare_entry(
+      "Lining reference principal stresses",
+      "",
+      Patterns::Anything(),
+      "tunnel_lining grids: extremes of principal stresses to compare with, "
+      "'min of s_min : max of s_min : min of s_max : max of s_max', "
+      "expressions of the constants in the scene's stress unit (e.g. the "
+      "paper's Fig. 12 values converted). summary.txt lists them next to "
+      "ours. Empty: no comparison.");
     prm.leave_subsection();
   }
 
@@ -74,9 +91,12 @@ namespace hrcontact
     print_timing = prm.get_bool("Print timing");
     prm.leave_subsection();
     prm.enter_subsection("Postprocess");
-    hertz_load    = prm.get("Hertz load");
-    hertz_radius  = prm.get("Hertz radius");
-    tracked_nodes = prm.get("Tracked contact nodes");
+    hertz_load      = prm.get("Hertz load");
+    hertz_radius    = prm.get("Hertz radius");
+    tracked_nodes   = prm.get("Tracked contact nodes");
+    lining_sections = prm.get_integer("Lining sections");
+    lining_reference_principal_stresses =
+      prm.get("Lining reference principal stresses");
     prm.leave_subsection();
   }
 
@@ -334,9 +354,13 @@ namespace hrcontact
             sum += v;
           return sum;
         }());
+    if constexpr (dim == 2)
+      if (scene.lining)
+        lining_output(log);
     if (has_contact)
       {
-        contact_pressure_summary(log);
+        if (!scene.lining)
+          contact_pressure_summary(log);
         write_contact_tables();
       }
     summary.write(output.directory + "/summary.txt");

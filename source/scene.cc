@@ -32,13 +32,21 @@ namespace hrcontact
         "hyper_cube",
         Patterns::Anything(),
         "Name of a deal.II GridGenerator function, e.g. hyper_cube, "
-        "subdivided_hyper_rectangle, hyper_shell, or half_cylinder (ours: the "
+        "subdivided_hyper_rectangle, hyper_shell, or one of ours: "
+        "half_cylinder (the "
         "half model of a cylinder of radius R on the plane y = -R, graded "
         "towards the contact point; arguments R : phi_c : q, half the surface "
         "nodes lie uniformly on the arc phi_c (radians, <= pi/4) next to the "
         "contact point, q >= 1 thins the layers towards the surface; ids 0 "
         "symmetry x = 0, 1 loaded "
-        "diameter y = 0, 2 curved surface). For deal.II grids the boundary "
+        "diameter y = 0, 2 curved surface); tunnel_lining (the right half, "
+        "x >= 0, of a lining of two circular arcs; arguments R_c : R_i : H : "
+        "t_c : t_i [: cells across], expressions of the constants: intrados "
+        "crown radius centred at the origin, invert radius centred on x = 0, "
+        "clear height, crown and invert thickness, coarse cells across the "
+        "thickness (default 1); ids 0 intrados, 1 extrados, 2 symmetry cut "
+        "at the crown, 3 symmetry cut at the invert; see doc/tunnel.md). For "
+        "deal.II grids the boundary "
         "ids are those the generator assigns (use colorize = true for a rectangle: 0 left, "
         "1 right, 2 bottom, 3 top, in 3D 4 back, 5 front).");
       prm.declare_entry(
@@ -104,6 +112,17 @@ namespace hrcontact
         "Surface tractions (force per unit area, global components) per "
         "boundary id: 'id: tx; ty [; tz]', entries separated by '|', e.g. "
         "'1: 0; -100*x | 3: 50; 0'. Empty: none.");
+      prm.declare_entry(
+        "Projected pressures",
+        "",
+        Patterns::Anything(),
+        "Earth-pressure-like loads per boundary id: 'id: px; py [; pz]', "
+        "entries separated by '|'. p_k (force per unit area, positive "
+        "pressing on the body) acts on the projection of the surface normal "
+        "to axis k: the traction is t_k = -p_k n_k (no sum), n the outward "
+        "normal. px = py = p is a normal pressure p; 'py = q' alone puts a "
+        "vertical load q per unit horizontal length on a curved roof. "
+        "Empty: none.");
     }
     prm.leave_subsection();
 
@@ -145,6 +164,17 @@ namespace hrcontact
         "normalised); coordinates are expressions of the constants. Each node "
         "of the boundary gets one unilateral constraint w.n - g <= 0 with the "
         "gap g = (x0 - x).n, reaction p n with p <= 0. Empty: no contact.");
+      prm.declare_entry(
+        "Boundary supports",
+        "",
+        Patterns::Anything(),
+        "Unilateral frictionless supports along the body's own boundary, "
+        "against a rigid surrounding medium (e.g. the ground around a tunnel "
+        "lining): 'id: g', entries separated by '|', with g the initial gap "
+        "(an expression in x, y (, z); 0 for a medium in contact). Each node "
+        "of the boundary gets w.n - g <= 0 with n the outward normal of the "
+        "body at the node (face normals averaged), the same constraint as an "
+        "obstacle. Empty: none.");
     }
     prm.leave_subsection();
   }
@@ -200,6 +230,17 @@ namespace hrcontact
                              dim,
                              constants,
                              "Loads/Tractions, boundary " +
+                               std::to_string(e.boundary_id));
+      for (const BoundaryEntry &e :
+           parse_boundary_list(prm.get("Projected pressures"),
+                               dim,
+                               false,
+                               "Loads/Projected pressures"))
+        projected_pressures[e.boundary_id] =
+          make_function<dim>(e.expressions,
+                             dim,
+                             constants,
+                             "Loads/Projected pressures, boundary " +
                                std::to_string(e.boundary_id));
     }
     prm.leave_subsection();
@@ -271,7 +312,35 @@ namespace hrcontact
                            " already has a bilateral normal constraint.");
         obstacles[e.boundary_id] = obstacle;
       }
+    for (const BoundaryEntry &e :
+         parse_boundary_list(prm.get("Boundary supports"),
+                             dim,
+                             false,
+                             "Contact/Boundary supports"))
+      {
+        const std::string where = "Contact/Boundary supports, boundary " +
+                                  std::to_string(e.boundary_id);
+        if (normal_displacements.count(e.boundary_id) ||
+            obstacles.count(e.boundary_id))
+          throw InputError(where + ": boundary " +
+                           std::to_string(e.boundary_id) +
+                           " already has a normal constraint or an obstacle.");
+        boundary_supports[e.boundary_id] =
+          make_function<dim>(e.expressions, 1, constants, where);
+      }
     prm.leave_subsection();
+
+    if (grid_generator == "tunnel_lining")
+      {
+        if (dim != 2)
+          throw InputError("Geometry: tunnel_lining is a 2D grid.");
+        if (rotation_degrees != 0 || distortion != 0)
+          throw InputError("Geometry: tunnel_lining cannot be rotated or "
+                           "distorted (its sections are computed from the "
+                           "arcs).");
+        lining =
+          std::make_shared<const TunnelLining>(grid_arguments, constants);
+      }
   }
 
   namespace
@@ -350,7 +419,15 @@ namespace hrcontact
   void
   Scene<dim>::create_mesh(Triangulation<dim> &triangulation) const
   {
-    if (grid_generator == "half_cylinder")
+    if (lining)
+      {
+        if constexpr (dim == 2)
+          {
+            lining->create_coarse_mesh(triangulation);
+            triangulation.refine_global(global_refinements);
+          }
+      }
+    else if (grid_generator == "half_cylinder")
       {
         try
           {

@@ -28,6 +28,9 @@ namespace hrcontact
 
     /** 2D contact postprocessing (see declare_parameters). */
     std::string hertz_load, hertz_radius, tracked_nodes;
+    /** tunnel_lining postprocessing (see declare_parameters). */
+    unsigned int lining_sections = 120;
+    std::string  lining_reference_principal_stresses;
 
     std::string directory    = "output";
     bool        write_vtu    = true;
@@ -89,6 +92,13 @@ namespace hrcontact
     /** Pressures from nodal reactions, contact zone, Hertz comparison. */
     void
     contact_pressure_summary(std::ostream &log);
+    /**
+     * tunnel_lining scenes: section forces (lining.csv), contact pressure
+     * along the extrados (lining-contact.csv), pressed zones, extremes of
+     * the principal stresses and of N and M in summary.txt.
+     */
+    void
+    lining_output(std::ostream &log);
     /** Sorted unilateral Q-row indices (by x, then y, then z). */
     std::vector<unsigned int>
     sorted_contact_rows() const;

@@ -8,6 +8,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <hrcontact/input.h>
+#include <hrcontact/tunnel_lining.h>
 
 #include <map>
 #include <memory>
@@ -53,11 +54,13 @@ namespace hrcontact
     Constants constants;
 
     // Geometry
-    std::string  grid_generator;
-    std::string  grid_arguments;
-    unsigned int global_refinements = 0;
-    double       distortion         = 0;
-    double       rotation_degrees   = 0;
+    std::string grid_generator;
+    /** The tunnel_lining geometry when the scene uses it, else null. */
+    std::shared_ptr<const TunnelLining> lining;
+    std::string                         grid_arguments;
+    unsigned int                        global_refinements = 0;
+    double                              distortion         = 0;
+    double                              rotation_degrees   = 0;
 
     // Material
     double youngs_modulus = 1;
@@ -69,6 +72,16 @@ namespace hrcontact
     std::map<dealii::types::boundary_id,
              std::unique_ptr<dealii::FunctionParser<dim>>>
       tractions;
+    /**
+     * Earth-pressure-like loads per boundary id: pressures p_k acting on the
+     * projection of the surface normal to axis k, i.e. the traction
+     * t_k = -p_k n_k (no sum) with n the outward normal. Equal p_k give a
+     * normal pressure; a vertical p_y alone loads the horizontal projection,
+     * as soil loads on a tunnel do.
+     */
+    std::map<dealii::types::boundary_id,
+             std::unique_ptr<dealii::FunctionParser<dim>>>
+      projected_pressures;
 
     // Supports
     struct PrescribedDisplacement
@@ -94,6 +107,15 @@ namespace hrcontact
       dealii::Tensor<1, dim> normal;
     };
     std::map<dealii::types::boundary_id, Obstacle> obstacles;
+    /**
+     * Unilateral frictionless supports along the body's own boundary (the
+     * surrounding medium taken rigid): per boundary id the initial gap g; the
+     * normal of each node is the body's outward normal there (face normals
+     * averaged), pointing into the support.
+     */
+    std::map<dealii::types::boundary_id,
+             std::unique_ptr<dealii::FunctionParser<dim>>>
+      boundary_supports;
   };
 } // namespace hrcontact
 
