@@ -19,6 +19,8 @@ main()
                                  "impossible-geometry",
                                  "conflicting-supports",
                                  "incompressible",
+                                 "impossible-tunnel",
+                                 "support-and-constraint",
                                  "no-such-file"})
     {
       std::filesystem::remove_all("should-not-exist");
