@@ -107,6 +107,7 @@ namespace hrcontact
     Scene<dim>::declare_parameters(prm);
     MixedSpaces<dim>::declare_parameters(prm);
     EquilibriumReduction::declare_parameters(prm);
+    LinearSolverSettings::declare_parameters(prm);
     AugmentedLagrangianSolver::declare_parameters(prm);
     Postprocessor<dim>::declare_parameters(prm);
     OutputSettings::declare_parameters(prm);
@@ -119,6 +120,7 @@ namespace hrcontact
     scene.parse_parameters(prm);
     spaces.parse_parameters(prm);
     reduction.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
     contact_solver.parse_parameters(prm, scene.constants);
     postprocessor.parse_parameters(prm, scene.constants);
     output.parse_parameters(prm);
@@ -175,7 +177,7 @@ namespace hrcontact
           path = std::make_unique<NullSpaceStep>(reduction);
         }
       else
-        path = std::make_unique<CondensedStep>(system);
+        path = std::make_unique<CondensedStep>(system, linear_solver);
     }
     has_contact = false;
     for (const unsigned int r : system.contact_rows)
@@ -210,6 +212,17 @@ namespace hrcontact
       path->stresses(stress);
       path->displacements(contact_w, displacement);
     }
+    linear_statistics = path->statistics;
+    if (solution_path == "condensed")
+      log << "  linear solver: " << linear_statistics.solver << ", "
+          << linear_statistics.solves << " solves"
+          << (linear_statistics.solver == "cg-amg" ?
+                ", " + std::to_string(linear_statistics.iterations) +
+                  " CG iterations, " +
+                  std::to_string(linear_statistics.preconditioner_setups) +
+                  " AMG set-ups" :
+                std::string())
+          << std::endl;
 
     contact_reactions.clear();
     for (const unsigned int r : system.contact_rows)
@@ -249,6 +262,16 @@ namespace hrcontact
     summary.add("normal_rows", system.contact_rows.size());
     summary.add("prescribed_rows", system.prescribed_rows.size());
     summary.add("solution_path", solution_path);
+    if (solution_path == "condensed")
+      {
+        summary.add("linear_solver", linear_statistics.solver);
+        summary.add("linear_solves", linear_statistics.solves);
+        summary.add("linear_iterations", linear_statistics.iterations);
+        summary.add("preconditioner_setups",
+                    linear_statistics.preconditioner_setups);
+        summary.add("linear_setup_seconds", linear_statistics.setup_seconds);
+        summary.add("linear_solve_seconds", linear_statistics.solve_seconds);
+      }
     if (solution_path == "null-space")
       summary.add("self_equilibrated_stresses",
                   reduction.n_self_equilibrated());

@@ -1,15 +1,105 @@
+#include <deal.II/base/timer.h>
+
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <hrcontact/input.h>
 #include <hrcontact/newton_step.h>
 
 #include <cmath>
 
+#include <Epetra_MultiVector.h>
+
 namespace hrcontact
 {
   using namespace dealii;
+
+  void
+  LinearSolverSettings::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    prm.declare_entry(
+      "Solver",
+      "automatic",
+      Patterns::Selection("automatic|direct|cg-amg"),
+      "Condensed path only: how each Newton step's sparse SPD system is "
+      "solved. direct: UMFPACK (exact, memory grows fast in 3D); cg-amg: CG "
+      "preconditioned by Trilinos ML smoothed-aggregation AMG with the "
+      "rigid-body modes as near null space; automatic: direct up to Direct "
+      "solver limit unknowns, cg-amg above.");
+    prm.declare_entry("Direct solver limit",
+                      "2e5",
+                      Patterns::Double(0),
+                      "Unknowns up to which Solver = automatic takes the "
+                      "direct solver.");
+    prm.declare_entry(
+      "Tolerance",
+      "1e-12",
+      Patterns::Double(0, 1),
+      "CG stops when the residual falls below this fraction of the right-hand "
+      "side's norm. The contact reactions p = Q s - q are differences of "
+      "large nodal forces, so keep it tight (1e-12 gives p to about 1e-9).");
+    prm.declare_entry("Maximum iterations",
+                      "2000",
+                      Patterns::Integer(1),
+                      "CG iterations per solve before the run stops with a "
+                      "named error (exit code 3).");
+    prm.declare_entry(
+      "Reuse preconditioner",
+      "true",
+      Patterns::Bool(),
+      "Keep the AMG hierarchy of an earlier Newton step while CG still "
+      "converges in at most twice the iterations it took right after the "
+      "set-up (the matrices differ only in the contact rows); rebuild it "
+      "otherwise. false: a new hierarchy for every solve.");
+    prm.declare_entry("Warm start",
+                      "true",
+                      Patterns::Bool(),
+                      "Start CG from the previous Newton step's displacements "
+                      "instead of zero.");
+    prm.leave_subsection();
+  }
+
+  void
+  LinearSolverSettings::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    solver               = prm.get("Solver");
+    direct_limit         = prm.get_double("Direct solver limit");
+    tolerance            = prm.get_double("Tolerance");
+    max_iterations       = prm.get_integer("Maximum iterations");
+    reuse_preconditioner = prm.get_bool("Reuse preconditioner");
+    warm_start           = prm.get_bool("Warm start");
+    prm.leave_subsection();
+  }
+
+  std::string
+  LinearSolverSettings::choose(const unsigned int n) const
+  {
+    if (solver != "automatic")
+      return solver;
+    return (n <= direct_limit) ? "direct" : "cg-amg";
+  }
+
+  /** The Trilinos side of the CG + AMG solver. */
+  struct CondensedStep::AMG
+  {
+    /** The matrix the hierarchy was built from (ML keeps a pointer). */
+    TrilinosWrappers::SparseMatrix      setup_matrix;
+    TrilinosWrappers::SparseMatrix      matrix;
+    TrilinosWrappers::PreconditionAMG   preconditioner;
+    std::unique_ptr<Epetra_MultiVector> modes;
+    bool                                built                  = false;
+    unsigned int                        iterations_after_setup = 0;
+    /** Rigid-body modes per dof: component and node coordinates. */
+    std::vector<unsigned int>          component;
+    std::vector<std::array<double, 3>> point;
+  };
 
   // ------------------------------------------------------------------------
   // Null-space path
@@ -150,10 +240,29 @@ namespace hrcontact
   // ------------------------------------------------------------------------
   // Condensed path
 
-  CondensedStep::CondensedStep(const EquilibriumSystem &system)
+  CondensedStep::~CondensedStep() = default;
+
+  CondensedStep::CondensedStep(const EquilibriumSystem    &system,
+                               const LinearSolverSettings &settings)
     : system(system)
+    , settings(settings)
   {
-    const unsigned int     n_u = system.n_displacement_dofs;
+    const unsigned int n_u = system.n_displacement_dofs;
+    solver                 = settings.choose(n_u);
+    statistics.solver      = solver;
+    if (solver == "cg-amg")
+      {
+        amg = std::make_unique<AMG>();
+        amg->component.assign(n_u, 0);
+        amg->point.assign(n_u, {{0., 0., 0.}});
+        for (const auto &row : system.rows)
+          for (unsigned int k = 0; k < row.combination.size(); ++k)
+            {
+              amg->component[row.combination[k].first] = k;
+              amg->point[row.combination[k].first] =
+                system.node_coordinates[row.node];
+            }
+      }
     DynamicSparsityPattern dsp(n_u, n_u);
     for (const auto &dofs : system.cell_displacement_dofs)
       for (const auto i : dofs)
@@ -236,23 +345,37 @@ namespace hrcontact
     constraints.close();
     constraints.condense(A, rhs);
 
-    SparseDirectUMFPACK direct;
-    try
+    ++statistics.solves;
+    if (solver == "cg-amg")
       {
-        direct.initialize(A);
+        if (!settings.warm_start || u.size() != n_u)
+          u.reinit(n_u);
+        solve_cg_amg(A, rhs);
+        constraints.distribute(u);
       }
-    catch (const std::exception &)
+    else
       {
-        throw InputError(
-          "Condensed path: the stiffness B F^-1 B^T with the current supports "
-          "is singular: the body has a zero-energy mode (a mechanism, an "
-          "unsupported body, or a stress space too poor for the mesh). The "
-          "null-space path (Equilibrium reduction/Path = null-space) names "
-          "the nodes the mode moves.");
+        Timer               timer;
+        SparseDirectUMFPACK direct;
+        try
+          {
+            direct.initialize(A);
+          }
+        catch (const std::exception &)
+          {
+            throw InputError(
+              "Condensed path: the stiffness B F^-1 B^T with the current supports "
+              "is singular: the body has a zero-energy mode (a mechanism, an "
+              "unsupported body, or a stress space too poor for the mesh). The "
+              "null-space path (Equilibrium reduction/Path = null-space) names "
+              "the nodes the mode moves.");
+          }
+        statistics.setup_seconds += timer.wall_time();
+        u.reinit(n_u);
+        direct.vmult(u, rhs);
+        constraints.distribute(u);
+        statistics.solve_seconds += timer.wall_time();
       }
-    u.reinit(n_u);
-    direct.vmult(u, rhs);
-    constraints.distribute(u);
 
     s.reinit(system.n_stress_dofs);
     for (unsigned int c = 0; c < recovery.size(); ++c)
@@ -273,6 +396,109 @@ namespace hrcontact
         const EquilibriumRow &row = system.rows[system.contact_rows[i]];
         p[i] = system.row_times(row, s) - system.row_load(row);
       }
+  }
+
+  void
+  CondensedStep::solve_cg_amg(const SparseMatrix<double> &A,
+                              const Vector<double>       &rhs)
+  {
+    Timer timer;
+    // Keep every entry of the pattern (a negative drop tolerance): the zeros
+    // of rows constrained now are springs or stiffness in later steps.
+    amg->matrix.reinit(A, -1., true, &sparsity);
+    auto setup = [&]() {
+      Timer setup_timer;
+      amg->preconditioner.clear();
+      amg->setup_matrix.reinit(A, -1., true, &sparsity);
+      // Smoothed aggregation for an elliptic operator; the near null space
+      // is the rigid-body modes (ML's pre-computed null space), since the
+      // translations alone (deal.II 9.4's constant modes) coarsen bending
+      // poorly.
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic              = true;
+      data.higher_order_elements = false;
+      data.smoother_sweeps       = 2;
+      data.aggregation_threshold = 1e-4;
+      const unsigned int dim     = system.dim;
+      data.constant_modes.assign(dim, std::vector<bool>(u.size(), false));
+      for (unsigned int i = 0; i < u.size(); ++i)
+        data.constant_modes[amg->component[i]][i] = true;
+      Teuchos::ParameterList              list;
+      std::unique_ptr<Epetra_MultiVector> translations;
+      data.set_parameters(list, translations, amg->setup_matrix);
+      const unsigned int n_modes = (dim == 2) ? 3 : 6;
+      amg->modes                 = std::make_unique<Epetra_MultiVector>(
+        amg->setup_matrix.trilinos_matrix().DomainMap(), n_modes);
+      for (unsigned int i = 0; i < u.size(); ++i)
+        {
+          const unsigned int c = amg->component[i];
+          const auto        &x = amg->point[i];
+          for (unsigned int m = 0; m < n_modes; ++m)
+            (*amg->modes)[m][i] = 0;
+          (*amg->modes)[c][i] = 1; // translations
+          // Rotations about the axes: (-y, x, 0), (0, -z, y), (z, 0, -x).
+          if (dim == 2)
+            (*amg->modes)[2][i] = (c == 0) ? -x[1] : x[0];
+          else
+            {
+              (*amg->modes)[3][i] = (c == 0) ? -x[1] : (c == 1) ? x[0] : 0.;
+              (*amg->modes)[4][i] = (c == 1) ? -x[2] : (c == 2) ? x[1] : 0.;
+              (*amg->modes)[5][i] = (c == 2) ? -x[0] : (c == 0) ? x[2] : 0.;
+            }
+        }
+      list.set("null space: type", "pre-computed");
+      list.set("null space: dimension", static_cast<int>(n_modes));
+      list.set("null space: vectors", amg->modes->Values());
+      list.set("null space: add default vectors", false);
+      amg->preconditioner.initialize(amg->setup_matrix, list);
+      amg->built = true;
+      ++statistics.preconditioner_setups;
+      statistics.setup_seconds += setup_timer.wall_time();
+    };
+    bool fresh = false;
+    if (!amg->built || !settings.reuse_preconditioner)
+      {
+        setup();
+        fresh = true;
+      }
+    auto run_cg = [&]() {
+      SolverControl            control(settings.max_iterations,
+                            settings.tolerance * rhs.l2_norm(),
+                            false,
+                            false);
+      SolverCG<Vector<double>> cg(control);
+      try
+        {
+          cg.solve(amg->matrix, u, rhs, amg->preconditioner);
+        }
+      catch (const SolverControl::NoConvergence &)
+        {
+          statistics.iterations += control.last_step();
+          return std::make_pair(false, control.last_step());
+        }
+      statistics.iterations += control.last_step();
+      return std::make_pair(true, control.last_step());
+    };
+    auto [converged, steps] = run_cg();
+    if (!converged && !fresh)
+      {
+        // A hierarchy from an earlier Newton step no longer serves: rebuild.
+        setup();
+        fresh                      = true;
+        std::tie(converged, steps) = run_cg();
+      }
+    if (!converged)
+      throw NotConvergedError(
+        "Condensed path: CG with AMG did not reach Linear solver/Tolerance "
+        "in Linear solver/Maximum iterations = " +
+        std::to_string(settings.max_iterations) +
+        " iterations. Raise the limit, loosen the tolerance, or take Linear "
+        "solver/Solver = direct.");
+    if (fresh)
+      amg->iterations_after_setup = steps;
+    else if (steps > 2 * amg->iterations_after_setup + 5)
+      amg->built = false; // rebuild before the next solve
+    statistics.solve_seconds += timer.wall_time();
   }
 
   void

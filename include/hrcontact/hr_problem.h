@@ -10,6 +10,7 @@
 #include <hrcontact/equilibrium_reduction.h>
 #include <hrcontact/equilibrium_system.h>
 #include <hrcontact/mixed_spaces.h>
+#include <hrcontact/newton_step.h>
 #include <hrcontact/postprocessor.h>
 #include <hrcontact/scene.h>
 
@@ -65,9 +66,12 @@ namespace hrcontact
     void
     run(std::ostream &log);
 
-    Scene<dim>                 scene;
-    MixedSpaces<dim>           spaces;
-    EquilibriumReduction       reduction;
+    Scene<dim>           scene;
+    MixedSpaces<dim>     spaces;
+    EquilibriumReduction reduction;
+    LinearSolverSettings linear_solver;
+    /** Counters of the condensed path's linear solves (zero otherwise). */
+    LinearSolverStatistics     linear_statistics;
     AugmentedLagrangianSolver  contact_solver;
     Postprocessor<dim>         postprocessor;
     OutputSettings             output;

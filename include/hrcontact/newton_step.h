@@ -1,6 +1,8 @@
 #ifndef hrcontact_newton_step_h
 #define hrcontact_newton_step_h
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -10,10 +12,50 @@
 #include <hrcontact/equilibrium_reduction.h>
 #include <hrcontact/equilibrium_system.h>
 
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace hrcontact
 {
+  /**
+   * How the condensed path solves its sparse SPD systems: a sparse direct
+   * solver (UMFPACK), or CG preconditioned by Trilinos ML smoothed-aggregation
+   * AMG that is given the rigid-body modes of elasticity (translations and
+   * rotations) as its near null space. The AMG hierarchy is kept across
+   * Newton steps while it still converges quickly, and CG starts from the
+   * previous step's displacements.
+   */
+  struct LinearSolverSettings
+  {
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /** "direct" or "cg-amg" for a system with n unknowns. */
+    std::string
+    choose(const unsigned int n) const;
+
+    std::string  solver               = "automatic";
+    double       direct_limit         = 2e5;
+    double       tolerance            = 1e-12;
+    unsigned int max_iterations       = 2000;
+    bool         reuse_preconditioner = true;
+    bool         warm_start           = true;
+  };
+
+  /** Counters of the linear solves of a path, for logs and benchmarks. */
+  struct LinearSolverStatistics
+  {
+    std::string  solver;
+    unsigned int solves                = 0;
+    unsigned int iterations            = 0;
+    unsigned int preconditioner_setups = 0;
+    double       setup_seconds         = 0;
+    double       solve_seconds         = 0;
+  };
+
   /**
    * One exact Newton step of the augmented Lagrangian (design.md section 4):
    * the maximiser of the quadratic piece of eq. 44 selected by a released
@@ -44,6 +86,9 @@ namespace hrcontact
     virtual void
     displacements(const std::vector<double> &contact_w,
                   dealii::Vector<double>    &u) const = 0;
+
+    /** Linear solver counters (zero for the dense path). */
+    LinearSolverStatistics statistics;
   };
 
   /**
@@ -88,7 +133,10 @@ namespace hrcontact
   class CondensedStep : public NewtonStepPath
   {
   public:
-    explicit CondensedStep(const EquilibriumSystem &system);
+    CondensedStep(
+      const EquilibriumSystem    &system,
+      const LinearSolverSettings &settings = LinearSolverSettings());
+    ~CondensedStep() override;
 
     void
     solve(const std::vector<bool>   &released,
@@ -102,12 +150,22 @@ namespace hrcontact
                   dealii::Vector<double>    &u) const override;
 
   private:
+    /** Solve A u = rhs by CG + AMG (u holds the initial guess). */
+    void
+    solve_cg_amg(const dealii::SparseMatrix<double> &A,
+                 const dealii::Vector<double>       &rhs);
+
     const EquilibriumSystem     &system;
+    const LinearSolverSettings   settings;
+    std::string                  solver;
     dealii::SparsityPattern      sparsity;
     dealii::SparseMatrix<double> K;
     /** F_c^{-1} B_c^T per cell (stress dofs x displacement dofs). */
     std::vector<dealii::FullMatrix<double>> recovery;
     dealii::Vector<double>                  u, s;
+    /** Trilinos objects of the AMG solver (kept between Newton steps). */
+    struct AMG;
+    std::unique_ptr<AMG> amg;
   };
 } // namespace hrcontact
 
