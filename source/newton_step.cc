@@ -57,6 +57,17 @@ namespace hrcontact
       "converges in at most twice the iterations it took right after the "
       "set-up (the matrices differ only in the contact rows); rebuild it "
       "otherwise. false: a new hierarchy for every solve.");
+    prm.declare_entry(
+      "AMG aggregation threshold",
+      "1e-4",
+      Patterns::Double(0, 1),
+      "ML's aggregation threshold: matrix entries below this fraction of the "
+      "diagonal do not connect nodes when the aggregates are built. Larger "
+      "values coarsen less across weak couplings (stretched cells).");
+    prm.declare_entry("AMG smoother sweeps",
+                      "2",
+                      Patterns::Integer(1, 20),
+                      "Degree of the Chebyshev smoother on each AMG level.");
     prm.declare_entry("Warm start",
                       "true",
                       Patterns::Bool(),
@@ -69,12 +80,14 @@ namespace hrcontact
   LinearSolverSettings::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    solver               = prm.get("Solver");
-    direct_limit         = prm.get_double("Direct solver limit");
-    tolerance            = prm.get_double("Tolerance");
-    max_iterations       = prm.get_integer("Maximum iterations");
-    reuse_preconditioner = prm.get_bool("Reuse preconditioner");
-    warm_start           = prm.get_bool("Warm start");
+    solver                = prm.get("Solver");
+    direct_limit          = prm.get_double("Direct solver limit");
+    tolerance             = prm.get_double("Tolerance");
+    max_iterations        = prm.get_integer("Maximum iterations");
+    reuse_preconditioner  = prm.get_bool("Reuse preconditioner");
+    warm_start            = prm.get_bool("Warm start");
+    aggregation_threshold = prm.get_double("AMG aggregation threshold");
+    smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
     prm.leave_subsection();
   }
 
@@ -417,8 +430,8 @@ namespace hrcontact
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
       data.elliptic              = true;
       data.higher_order_elements = false;
-      data.smoother_sweeps       = 2;
-      data.aggregation_threshold = 1e-4;
+      data.smoother_sweeps       = settings.smoother_sweeps;
+      data.aggregation_threshold = settings.aggregation_threshold;
       const unsigned int dim     = system.dim;
       data.constant_modes.assign(dim, std::vector<bool>(u.size(), false));
       for (unsigned int i = 0; i < u.size(); ++i)

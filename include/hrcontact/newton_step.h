@@ -37,12 +37,14 @@ namespace hrcontact
     std::string
     choose(const unsigned int n) const;
 
-    std::string  solver               = "automatic";
-    double       direct_limit         = 2e5;
-    double       tolerance            = 1e-12;
-    unsigned int max_iterations       = 2000;
-    bool         reuse_preconditioner = true;
-    bool         warm_start           = true;
+    std::string  solver                = "automatic";
+    double       direct_limit          = 2e5;
+    double       tolerance             = 1e-12;
+    unsigned int max_iterations        = 2000;
+    bool         reuse_preconditioner  = true;
+    bool         warm_start            = true;
+    double       aggregation_threshold = 1e-4;
+    unsigned int smoother_sweeps       = 2;
   };
 
   /** Counters of the linear solves of a path, for logs and benchmarks. */
