@@ -25,28 +25,15 @@ compare_contact(const std::string &scene, const std::string &extra)
   const auto  a  = run<2>(scene, extra, "null-space");
   const auto  b  = run<2>(scene, extra, "condensed");
   const auto &ha = a->contact_solver, &hb = b->contact_solver;
-  bool        same_alpha = ha.alpha_history.size() == hb.alpha_history.size();
-  bool        same_sets  = same_alpha;
-  double      p_diff = 0, p_max = 0;
-  for (unsigned int k = 0; same_alpha && k < ha.alpha_history.size(); ++k)
-    {
-      same_alpha &= (ha.alpha_history[k] == hb.alpha_history[k]);
-      same_sets &= (ha.released_history[k] == hb.released_history[k]);
-      for (unsigned int i = 0; i < ha.p_history[k].size(); ++i)
-        {
-          p_max = std::max(p_max, std::abs(ha.p_history[k][i]));
-          p_diff =
-            std::max(p_diff, std::abs(ha.p_history[k][i] - hb.p_history[k][i]));
-        }
-    }
+  const auto  c = hrcontact_tests::compare_histories(ha, hb);
   std::cout
     << scene << ": " << ha.history.size() << " and " << hb.history.size()
     << " multiplier updates, " << ha.total_newton_steps << " and "
     << hb.total_newton_steps
-    << " Newton steps\n  same alpha sequence: " << (same_alpha ? "yes" : "NO")
-    << "\n  same released set at every update: " << (same_sets ? "yes" : "NO")
+    << " Newton steps\n  same alpha sequence: " << (c.same_alpha ? "yes" : "NO")
+    << "\n  same released set at every update: " << (c.same_sets ? "yes" : "NO")
     << "\n  max |p_null - p_condensed| / max |p| over all updates < 1e-9: "
-    << hrcontact_tests::check(p_diff / p_max, 1e-9) << std::endl;
+    << hrcontact_tests::check(c.p_difference, 1e-9) << std::endl;
 }
 
 int

@@ -1,21 +1,21 @@
 // Small helpers shared by the test programs (deal.II's own tests.h is not
 // installed with the library).
 #ifndef hrcontact_tests_h
-#  define hrcontact_tests_h
+#define hrcontact_tests_h
 
-#  include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parameter_handler.h>
 
-#  include <hrcontact/hr_problem.h>
-#  include <hrcontact/run.h>
+#include <hrcontact/hr_problem.h>
+#include <hrcontact/run.h>
 
-#  include <algorithm>
-#  include <cmath>
-#  include <fstream>
-#  include <iomanip>
-#  include <iostream>
-#  include <memory>
-#  include <sstream>
-#  include <string>
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
 
 namespace hrcontact_tests
 {
@@ -51,9 +51,38 @@ namespace hrcontact_tests
     s << std::scientific << std::setprecision(3) << value;
     return (value <= bound) ? "yes" : "NO (value " + s.str() + ")";
   }
-} // namespace hrcontact_tests
+  /** How two augmented Lagrangian histories compare. */
+  struct HistoryComparison
+  {
+    bool   same_alpha = false, same_sets = false;
+    double p_difference = 0; // max |p_a - p_b| / max |p| over all updates
+  };
 
-#endif
+  inline HistoryComparison
+  compare_histories(const hrcontact::AugmentedLagrangianSolver &a,
+                    const hrcontact::AugmentedLagrangianSolver &b)
+  {
+    HistoryComparison c;
+    c.same_alpha = a.alpha_history.size() == b.alpha_history.size();
+    c.same_sets  = c.same_alpha;
+    double p_max = 0;
+    for (unsigned int k = 0; c.same_alpha && k < a.alpha_history.size(); ++k)
+      {
+        c.same_alpha &= (a.alpha_history[k] == b.alpha_history[k]);
+        c.same_sets &= (a.released_history[k] == b.released_history[k]);
+        for (unsigned int i = 0; i < a.p_history[k].size(); ++i)
+          {
+            p_max = std::max(p_max, std::abs(a.p_history[k][i]));
+            c.p_difference =
+              std::max(c.p_difference,
+                       std::abs(a.p_history[k][i] - b.p_history[k][i]));
+          }
+      }
+    if (p_max > 0)
+      c.p_difference /= p_max;
+    return c;
+  }
+} // namespace hrcontact_tests
 
 namespace hrcontact_tests
 {
@@ -217,3 +246,5 @@ namespace hrcontact_tests
       }
   }
 } // namespace hrcontact_tests
+
+#endif

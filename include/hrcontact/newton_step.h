@@ -33,15 +33,16 @@ namespace hrcontact
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
-    /** "direct" or "cg-amg" for a system with n unknowns. */
+    /** "direct" or "cg-amg" for a system with n unknowns in dim dimensions. */
     std::string
-    choose(const unsigned int n) const;
+    choose(const unsigned int n, const unsigned int dim) const;
 
     std::string  solver                = "automatic";
-    double       direct_limit          = 2e5;
+    double       direct_limit_2d       = 1e5;
+    double       direct_limit_3d       = 1e4;
     double       tolerance             = 1e-12;
     unsigned int max_iterations        = 2000;
-    bool         reuse_preconditioner  = true;
+    bool         reuse_preconditioner  = false;
     bool         warm_start            = true;
     double       aggregation_threshold = 1e-4;
     unsigned int smoother_sweeps       = 2;
