@@ -16,15 +16,28 @@ namespace hrcontact
   AugmentedLagrangianSolver::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Augmented Lagrangian");
-    prm.declare_entry("Initial penalty",
-                      "1e-3",
-                      Patterns::Anything(),
-                      "Initial compliance alpha_0 of every unilateral "
-                      "constraint (length per force; an expression of the "
-                      "constants). Small against the nodal compliance of the "
-                      "mesh ties released nodes to their trial position and "
-                      "slows convergence (the paper's Fig. 14); large makes "
-                      "the iteration behave like an active-set method.");
+    prm.declare_entry(
+      "Initial penalty",
+      "1e4",
+      Patterns::Anything(),
+      "Initial compliance alpha_0 of every unilateral constraint (an "
+      "expression of the constants): with Initial penalty scaling = nodal "
+      "compliance, a factor times the nodal compliance of the mesh and "
+      "material; with absolute, a length per force. Small against the nodal "
+      "compliance ties released nodes to their trial position and slows "
+      "convergence (the paper's Fig. 14); large makes the iteration behave "
+      "like an active-set method, until the released springs no longer hold "
+      "the body.");
+    prm.declare_entry(
+      "Initial penalty scaling",
+      "nodal compliance",
+      Patterns::Selection("nodal compliance|absolute"),
+      "nodal compliance: alpha_0 = Initial penalty x c_h, with c_h = (1 - "
+      "nu^2)/E in plane strain, 1/E in plane stress (length per force per unit "
+      "thickness) and 1/(E h) in 3D, h the mean cell size (volume / cells)^(1/3): "
+      "the compliance of a boundary node up to a factor of order one, so the "
+      "same factor works in any units and on any mesh. absolute: alpha_0 = "
+      "Initial penalty as given (the paper's 0.001).");
     prm.declare_entry("Penalty growth factor",
                       "10",
                       Patterns::Double(1),
@@ -91,11 +104,14 @@ namespace hrcontact
                                               const Constants  &constants)
   {
     prm.enter_subsection("Augmented Lagrangian");
-    initial_alpha =
+    initial_penalty =
       evaluate_constant_expression(prm.get("Initial penalty"),
                                    constants,
                                    "Augmented Lagrangian/Initial penalty");
-    if (!(initial_alpha > 0))
+    scale_by_compliance =
+      (prm.get("Initial penalty scaling") == "nodal compliance");
+    initial_alpha = initial_penalty;
+    if (!(initial_penalty > 0))
       throw InputError(
         "Augmented Lagrangian/Initial penalty must be positive.");
     rho                = prm.get_double("Penalty growth factor");
@@ -112,6 +128,13 @@ namespace hrcontact
     if (eps_min > eps_max)
       throw InputError("Augmented Lagrangian: Minimum inner tolerance exceeds "
                        "Maximum inner tolerance.");
+  }
+
+  void
+  AugmentedLagrangianSolver::set_nodal_compliance(const double c)
+  {
+    nodal_compliance = c;
+    initial_alpha = scale_by_compliance ? initial_penalty * c : initial_penalty;
   }
 
   bool
@@ -164,8 +187,12 @@ namespace hrcontact
     std::vector<bool>   released_previous(nq, false);
 
     log << "  augmented Lagrangian: " << nq << " contact constraints, initial "
-        << "alpha " << initial_alpha << ", tolerance " << std::setprecision(3)
-        << tolerance_used << std::endl;
+        << "alpha " << initial_alpha;
+    if (scale_by_compliance)
+      log << " (" << initial_penalty << " x nodal compliance "
+          << nodal_compliance << ")";
+    log << ", tolerance " << std::setprecision(3) << tolerance_used
+        << std::endl;
 
     for (unsigned int k = 1;; ++k)
       {

@@ -190,6 +190,19 @@ namespace hrcontact
         double             load_scale = 0;
         for (unsigned int i = 0; i < system.load.size(); ++i)
           load_scale = std::max(load_scale, std::abs(system.load[i]));
+        // Nodal compliance c_h: (1 - nu^2)/E in plane strain, 1/E in plane
+        // stress, 1/(E h) in 3D with h the mean cell size.
+        double c_h = 1 / scene.youngs_modulus;
+        if (dim == 2 && scene.plane_strain)
+          c_h *= 1 - scene.poisson_ratio * scene.poisson_ratio;
+        if (dim == 3)
+          {
+            double volume = 0;
+            for (const auto &cell : triangulation.active_cell_iterators())
+              volume += cell->measure();
+            c_h /= std::cbrt(volume / triangulation.n_active_cells());
+          }
+        contact_solver.set_nodal_compliance(c_h);
         contact_solver.solve(system, *path, load_scale, log);
         // After the last multiplier update mu = w_n - g (pressed: mu = 0).
         for (unsigned int k = 0; k < nq; ++k)

@@ -48,9 +48,10 @@ main()
             << (summary.find("iterations = 2\n") != std::string::npos ? "yes" :
                                                                         "NO")
             << std::endl;
-  run("initial penalty 1e6 m/N",
-      "subsection Augmented Lagrangian\n  set Initial penalty = 1e6\nend\n"
-      "subsection Equilibrium reduction\n  set Path = condensed\nend\n");
+  run(
+    "initial penalty 1e6 m/N",
+    "subsection Augmented Lagrangian\n  set Initial penalty = 1e6\n  set Initial penalty scaling = absolute\nend\n"
+    "subsection Equilibrium reduction\n  set Path = condensed\nend\n");
   const std::string s2    = hrcontact_tests::read_file("results/summary.txt");
   const auto        pos   = s2.find("max_abs_displacement_component = ");
   const double      u_max = std::stod(

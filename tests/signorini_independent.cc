@@ -56,15 +56,16 @@ run(const Case &c)
       prm << (first ? "" : " | ") << id << ": " << t;
       first = false;
     }
-  prm << "\nend\n"
-      << c.supports
-      << "subsection Contact\n  set Obstacles = 2: " << c.obstacle_point[0]
-      << ", " << c.obstacle_point[1] << " : " << c.obstacle_normal[0] << ", "
-      << c.obstacle_normal[1] << "\nend\n"
-      << "subsection Augmented Lagrangian\n  set Initial penalty = 1\n"
-      << "  set Relative tolerance = 1e-13\nend\n"
-      << "subsection Output\n  set Output directory = results\n"
-      << "  set Write solution = false\nend\n";
+  prm
+    << "\nend\n"
+    << c.supports
+    << "subsection Contact\n  set Obstacles = 2: " << c.obstacle_point[0]
+    << ", " << c.obstacle_point[1] << " : " << c.obstacle_normal[0] << ", "
+    << c.obstacle_normal[1] << "\nend\n"
+    << "subsection Augmented Lagrangian\n  set Initial penalty = 1\n  set Initial penalty scaling = absolute\n"
+    << "  set Relative tolerance = 1e-13\nend\n"
+    << "subsection Output\n  set Output directory = results\n"
+    << "  set Write solution = false\nend\n";
   auto               problem = solve_from_text<2>(prm.str());
   std::ostringstream quiet;
   problem->output_results(quiet);

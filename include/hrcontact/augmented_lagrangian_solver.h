@@ -57,6 +57,13 @@ namespace hrcontact
     parse_parameters(dealii::ParameterHandler &prm, const Constants &constants);
 
     /**
+     * The nodal compliance c_h of the mesh and material (see the Initial
+     * penalty scaling entry); sets initial_alpha.
+     */
+    void
+    set_nodal_compliance(const double c);
+
+    /**
      * Solve with the given Newton-step path. `load_scale` (a force) makes the
      * relative tolerance and eps_k unit free. Returns true when converged;
      * the path then holds the final stresses and displacements.
@@ -68,10 +75,17 @@ namespace hrcontact
           std::ostream            &log);
 
     // Parameters (section 4.4, Step 1).
-    double       initial_alpha  = 1e-3;
-    double       rho            = 10;
-    double       delta          = 0.25;
-    bool         per_constraint = false;
+    /**
+     * alpha_0 from Initial penalty: times the nodal compliance c_h when
+     * scale_by_compliance (call set_nodal_compliance before solve).
+     */
+    double       initial_alpha       = 1e-3;
+    double       initial_penalty     = 1e4;
+    bool         scale_by_compliance = true;
+    double       nodal_compliance    = 0;
+    double       rho                 = 10;
+    double       delta               = 0.25;
+    bool         per_constraint      = false;
     double       eps_min = 1e-12, eps_max = 1e-2;
     double       absolute_tolerance = 0, relative_tolerance = 1e-10;
     unsigned int max_updates = 100, max_newton_steps = 50;
