@@ -92,6 +92,17 @@ namespace hrcontact
       "mesh can carry (typically Initial penalty far too large against the "
       "nodal compliance): the run stops with an error naming the cause, and "
       "writes its results with converged = false.");
+    prm.declare_entry(
+      "Regularisation",
+      "consistent augmented Lagrangian",
+      Patterns::Selection("consistent augmented Lagrangian|pure penalty"),
+      "consistent augmented Lagrangian: the paper's eq. 28 with multiplier "
+      "updates (eq. 48) and penalty updates (eq. 49). pure penalty: mu stays 0 "
+      "and alpha stays Initial penalty; the quadratic piece is solved exactly "
+      "once. A released constraint is then a spring of compliance alpha "
+      "anchored at the gap, so it carries a tension of about (opening) / "
+      "alpha: an error that shrinks only as alpha grows (and the solves "
+      "degrade).");
     prm.declare_entry("Maximum Newton steps",
                       "50",
                       Patterns::Integer(1),
@@ -123,6 +134,7 @@ namespace hrcontact
     relative_tolerance = prm.get_double("Relative tolerance");
     max_updates        = prm.get_integer("Maximum multiplier updates");
     max_newton_steps   = prm.get_integer("Maximum Newton steps");
+    pure_penalty       = (prm.get("Regularisation") == "pure penalty");
     max_penalty_growth = prm.get_double("Maximum penalty growth");
     prm.leave_subsection();
     if (eps_min > eps_max)
@@ -185,6 +197,7 @@ namespace hrcontact
     double              eps_k         = eps_max;
     unsigned int        newton_steps  = 0;
     std::vector<bool>   released_previous(nq, false);
+    bool                last_inner_exact = false;
 
     log << "  augmented Lagrangian: " << nq << " contact constraints, initial "
         << "alpha " << initial_alpha;
@@ -209,9 +222,11 @@ namespace hrcontact
           }
         released_previous = released;
 
-        // Step 4: multiplier update (eq. 48); afterwards mu = w_n - g.
-        for (unsigned int i = 0; i < nq; ++i)
-          mu[i] -= alpha[i] * pbar[i];
+        // Step 4: multiplier update (eq. 48); afterwards mu = w_n - g. The
+        // pure penalty keeps mu = 0.
+        if (!pure_penalty)
+          for (unsigned int i = 0; i < nq; ++i)
+            mu[i] -= alpha[i] * pbar[i];
 
         p_history.push_back(p);
         mu_history.push_back(mu);
@@ -234,9 +249,11 @@ namespace hrcontact
             << ", " << step.alpha_max << "], eps " << eps_k << std::defaultfloat
             << ", status changes " << changes << std::endl;
 
-        // Step 6: convergence test.
+        // Step 6: convergence test. The pure penalty is done once the
+        // inner solve has reached its exact piece (its own answer, with the
+        // tension of the released springs as its error).
         final_norm_pbar = norm;
-        if (norm < tolerance_used)
+        if (pure_penalty ? (k > 1 && last_inner_exact) : norm < tolerance_used)
           {
             converged = true;
             break;
@@ -254,7 +271,7 @@ namespace hrcontact
           }
 
         // Step 5: penalty update (eq. 49), within the allowed growth.
-        if (k > 1)
+        if (k > 1 && !pure_penalty)
           {
             const double alpha_cap = max_penalty_growth * initial_alpha;
             bool         capped    = false;
@@ -290,6 +307,8 @@ namespace hrcontact
           std::max(eps_min,
                    std::min(
                      {eps_max, eps_previous, relative_pbar * relative_pbar}));
+        if (pure_penalty)
+          eps_k = 0; // solve the piece exactly
         eps_previous = eps_k;
 
         // Step 3: Newton steps until the gradient, in contact coordinates
@@ -311,6 +330,7 @@ namespace hrcontact
             const double e_norm = norm_of(e);
             if (newton_steps == 0)
               initial_norm = e_norm;
+            last_inner_exact = (e_norm == 0);
             if (e_norm == 0 ||
                 (newton_steps > 0 && e_norm <= eps_k * initial_norm) ||
                 newton_steps >= max_newton_steps)

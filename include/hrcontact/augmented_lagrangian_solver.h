@@ -79,13 +79,15 @@ namespace hrcontact
      * alpha_0 from Initial penalty: times the nodal compliance c_h when
      * scale_by_compliance (call set_nodal_compliance before solve).
      */
-    double       initial_alpha       = 1e-3;
-    double       initial_penalty     = 1e4;
-    bool         scale_by_compliance = true;
-    double       nodal_compliance    = 0;
-    double       rho                 = 10;
-    double       delta               = 0.25;
-    bool         per_constraint      = false;
+    double initial_alpha       = 1e-3;
+    double initial_penalty     = 1e4;
+    bool   scale_by_compliance = true;
+    double nodal_compliance    = 0;
+    double rho                 = 10;
+    double delta               = 0.25;
+    bool   per_constraint      = false;
+    /** Pure quadratic penalty: no multiplier updates, fixed alpha. */
+    bool         pure_penalty = false;
     double       eps_min = 1e-12, eps_max = 1e-2;
     double       absolute_tolerance = 0, relative_tolerance = 1e-10;
     unsigned int max_updates = 100, max_newton_steps = 50;
