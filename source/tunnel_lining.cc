@@ -174,14 +174,10 @@ namespace hrcontact
     const double   theta_lim = std::max(theta_in, theta_out);
     const double   phi_lim   = std::min(phi_in, phi_out);
     const Point<2> O_i(0, y_invert);
-    const Point<2> end_crown(Rm_c * std::cos(theta_lim),
-                             Rm_c * std::sin(theta_lim));
-    const Point<2> start_invert =
-      O_i + Point<2>(Rm_i * std::cos(phi_lim), Rm_i * std::sin(phi_lim));
-    const double L_c   = Rm_c * (half_pi - theta_lim);
-    const double L_gap = end_crown.distance(start_invert);
-    const double L_i   = Rm_i * (phi_lim + half_pi);
-    const double total = L_c + L_gap + L_i;
+    const double   L_c   = Rm_c * (half_pi - theta_lim);
+    const double   L_gap = joint_gap_length();
+    const double   L_i   = Rm_i * (phi_lim + half_pi);
+    const double   total = L_c + L_gap + L_i;
 
     std::vector<SectionStation> stations;
     for (unsigned int k = 0; k <= n; ++k)
