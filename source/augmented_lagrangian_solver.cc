@@ -5,8 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
+#include <iostream>
 #include <limits>
+#include <set>
 
 namespace hrcontact
 {
@@ -95,14 +98,32 @@ namespace hrcontact
     prm.declare_entry(
       "Regularisation",
       "consistent augmented Lagrangian",
-      Patterns::Selection("consistent augmented Lagrangian|pure penalty"),
-      "consistent augmented Lagrangian: the paper's eq. 28 with multiplier "
-      "updates (eq. 48) and penalty updates (eq. 49). pure penalty: mu stays 0 "
-      "and alpha stays Initial penalty; the quadratic piece is solved exactly "
-      "once. A released constraint is then a spring of compliance alpha "
-      "anchored at the gap, so it carries a tension of about (opening) / "
-      "alpha: an error that shrinks only as alpha grows (and the solves "
-      "degrade).");
+      Patterns::Selection("consistent augmented Lagrangian|Macaulay augmented "
+                          "Lagrangian|pure penalty|displacement augmented "
+                          "Lagrangian"),
+      "consistent augmented Lagrangian: the paper's eq. 28, pbar = max(p, "
+      "mu/alpha), with multiplier updates (eq. 48) and penalty updates (eq. "
+      "49). Macaulay augmented Lagrangian: eq. 27 on the same constraint, pbar "
+      "= max(p, 0): a row is released only once it pulls, and a pressed row "
+      "is held whatever its multiplier (the Hessian jumps at p = 0). pure "
+      "penalty: mu stays 0 and alpha stays Initial penalty; the quadratic piece "
+      "is solved exactly once. A released constraint is then a spring of "
+      "compliance alpha anchored at the gap, so it carries a tension of about "
+      "(opening) / alpha: an error that shrinks only as alpha grows (and the "
+      "solves degrade). displacement augmented Lagrangian: eq. 29, what a "
+      "displacement code does: multiplier gamma (the reaction) and a stiffness "
+      "beta on the penetration w_n - g, a row in contact while gamma + beta (w_n "
+      "- g) > 0; Initial penalty is then the stiffness beta_0 (with nodal "
+      "compliance scaling: the factor divides c_h). It needs the condensed "
+      "path; ||pbar|| in the logs is then the change of the reactions.");
+    prm.declare_entry(
+      "Iteration scheme",
+      "classical",
+      Patterns::Selection("classical|diagonal"),
+      "Section 4.4. classical: Newton steps until the inner tolerance eps_k, "
+      "then one multiplier update. diagonal: one Newton step, then one "
+      "multiplier update (for the stress variants the update of a row uses "
+      "the piece that step solved).");
     prm.declare_entry("Maximum Newton steps",
                       "50",
                       Patterns::Integer(1),
@@ -134,7 +155,19 @@ namespace hrcontact
     relative_tolerance = prm.get_double("Relative tolerance");
     max_updates        = prm.get_integer("Maximum multiplier updates");
     max_newton_steps   = prm.get_integer("Maximum Newton steps");
-    pure_penalty       = (prm.get("Regularisation") == "pure penalty");
+    {
+      const std::string r = prm.get("Regularisation");
+      regularisation = (r == "pure penalty") ? Regularisation::pure_penalty :
+                       (r == "Macaulay augmented Lagrangian") ?
+                                               Regularisation::macaulay :
+                       (r == "displacement augmented Lagrangian") ?
+                                               Regularisation::displacement :
+                                               Regularisation::consistent;
+      pure_penalty   = (regularisation == Regularisation::pure_penalty);
+    }
+    diagonal = (prm.get("Iteration scheme") == "diagonal");
+    if (regularisation == Regularisation::displacement)
+      initial_alpha = 1. / initial_penalty;
     max_penalty_growth = prm.get_double("Maximum penalty growth");
     prm.leave_subsection();
     if (eps_min > eps_max)
@@ -146,7 +179,105 @@ namespace hrcontact
   AugmentedLagrangianSolver::set_nodal_compliance(const double c)
   {
     nodal_compliance = c;
-    initial_alpha = scale_by_compliance ? initial_penalty * c : initial_penalty;
+    // The displacement AL reads Initial penalty as a stiffness beta_0 and
+    // keeps alpha_0 = 1 / beta_0.
+    if (regularisation == Regularisation::displacement)
+      initial_alpha =
+        scale_by_compliance ? c / initial_penalty : 1. / initial_penalty;
+    else
+      initial_alpha =
+        scale_by_compliance ? initial_penalty * c : initial_penalty;
+  }
+
+  namespace
+  {
+    double
+    norm_of(const std::vector<double> &v)
+    {
+      double sum = 0;
+      for (const double x : v)
+        sum += x * x;
+      return std::sqrt(sum);
+    }
+  } // namespace
+
+  void
+  AugmentedLagrangianSolver::record(const unsigned int k,
+                                    const unsigned int newton_steps,
+                                    const double       eps_k,
+                                    const double       norm,
+                                    const unsigned int changes,
+                                    const double       seconds,
+                                    std::ostream      &log)
+  {
+    p_history.push_back(p);
+    mu_history.push_back(opening);
+    alpha_history.push_back(alpha);
+    released_history.push_back(released);
+
+    AugmentedLagrangianStep step;
+    step.k              = k;
+    step.newton_steps   = newton_steps;
+    step.alpha_min      = *std::min_element(alpha.begin(), alpha.end());
+    step.alpha_max      = *std::max_element(alpha.begin(), alpha.end());
+    step.eps_k          = eps_k;
+    step.norm_pbar      = norm;
+    step.active_changes = changes;
+    step.seconds        = seconds;
+    history.push_back(step);
+    final_norm_pbar = norm;
+    log << "    update " << std::setw(3) << k << ": Newton steps "
+        << std::setw(2) << newton_steps << ", ||pbar|| " << std::scientific
+        << std::setprecision(3) << norm << ", alpha [" << step.alpha_min << ", "
+        << step.alpha_max << "], eps " << eps_k << std::defaultfloat
+        << ", status changes " << changes << std::endl;
+  }
+
+  bool
+  AugmentedLagrangianSolver::update_penalty(
+    std::vector<double>       &penalty,
+    const std::vector<double> &r,
+    const std::vector<double> &r_previous,
+    const double               norm,
+    const double               norm_previous,
+    const double               initial)
+  {
+    const double cap    = max_penalty_growth * initial;
+    bool         capped = false;
+    if (per_constraint)
+      {
+        for (unsigned int i = 0; i < penalty.size(); ++i)
+          if (std::abs(r[i]) > delta * std::abs(r_previous[i]))
+            {
+              capped |= (rho * penalty[i] > cap);
+              penalty[i] *= rho;
+            }
+      }
+    else if (norm > delta * norm_previous)
+      for (double &a : penalty)
+        {
+          capped |= (rho * a > cap);
+          a *= rho;
+        }
+    if (capped)
+      {
+        for (double &a : penalty)
+          a = std::min(a, cap);
+        diverged = true;
+      }
+    return !capped;
+  }
+
+  double
+  AugmentedLagrangianSolver::inner_tolerance(const double norm,
+                                             double      &eps_previous) const
+  {
+    // Step 2, made unit free with the load scale.
+    const double relative = norm / force_scale;
+    const double eps_k =
+      std::max(eps_min, std::min({eps_max, eps_previous, relative * relative}));
+    eps_previous = eps_k;
+    return eps_k;
   }
 
   bool
@@ -164,6 +295,7 @@ namespace hrcontact
     mu.assign(nq, 0.);
     alpha.assign(nq, initial_alpha);
     released.assign(nq, false);
+    opening.assign(nq, 0.);
     history.clear();
     p_history.clear();
     mu_history.clear();
@@ -172,24 +304,47 @@ namespace hrcontact
     total_newton_steps = 0;
     converged          = false;
     diverged           = false;
+    cycled             = false;
 
     // Step 0: trial solution, every constraint bilateral with w_n = g.
     path.solve(released, mu, alpha, p);
-    // The contact force term the last solve balanced: [A](mu - alpha p).
-    std::vector<double> balanced(nq, 0.);
 
     double scale = std::abs(load_scale);
     for (unsigned int i = 0; i < nq; ++i)
       scale = std::max(scale, std::abs(p[i]));
     tolerance_used = std::max(absolute_tolerance, relative_tolerance * scale);
-    const double force_scale = std::max(scale, 1e-300);
+    force_scale    = std::max(scale, 1e-300);
 
-    auto norm_of = [](const std::vector<double> &v) {
-      double sum = 0;
-      for (const double x : v)
-        sum += x * x;
-      return std::sqrt(sum);
+    const bool macaulay = (regularisation == Regularisation::macaulay);
+    log << "  augmented Lagrangian ("
+        << (regularisation == Regularisation::consistent   ? "consistent" :
+            macaulay                                       ? "Macaulay" :
+            regularisation == Regularisation::pure_penalty ? "pure penalty" :
+                                                             "displacement")
+        << ", " << (diagonal ? "diagonal" : "classical") << "): " << nq
+        << " contact constraints, initial "
+        << (regularisation == Regularisation::displacement ? "stiffness beta " :
+                                                             "alpha ")
+        << (regularisation == Regularisation::displacement ? 1 / initial_alpha :
+                                                             initial_alpha);
+    if (scale_by_compliance)
+      log << " (" << initial_penalty
+          << (regularisation == Regularisation::displacement ? " / " : " x ")
+          << "nodal compliance " << nodal_compliance << ")";
+    log << ", tolerance " << std::setprecision(3) << tolerance_used
+        << std::endl;
+
+    if (regularisation == Regularisation::displacement)
+      return solve_displacement(system, unilateral, path, timer, log);
+
+    // The release threshold: p > mu/alpha (eq. 26), p > 0 (eq. 27).
+    auto threshold = [&](const unsigned int i) {
+      return macaulay ? 0. : mu[i] / alpha[i];
     };
+    // The contact force term the last solve balanced: [A](mu - alpha p),
+    // and the set A of that solve.
+    std::vector<double> balanced(nq, 0.);
+    std::vector<bool>   solved_released(nq, false);
 
     std::vector<double> pbar(nq, 0.), pbar_previous(nq, 0.);
     double              norm_previous = std::numeric_limits<double>::max();
@@ -199,60 +354,45 @@ namespace hrcontact
     std::vector<bool>   released_previous(nq, false);
     bool                last_inner_exact = false;
 
-    log << "  augmented Lagrangian: " << nq << " contact constraints, initial "
-        << "alpha " << initial_alpha;
-    if (scale_by_compliance)
-      log << " (" << initial_penalty << " x nodal compliance "
-          << nodal_compliance << ")";
-    log << ", tolerance " << std::setprecision(3) << tolerance_used
-        << std::endl;
-
     for (unsigned int k = 1;; ++k)
       {
         // pbar with the multipliers and compliances the solve used.
         for (unsigned int i = 0; i < nq; ++i)
-          pbar[i] = unilateral[i] ? std::max(p[i], mu[i] / alpha[i]) : 0.;
+          pbar[i] = unilateral[i] ? std::max(p[i], threshold(i)) : 0.;
         const double norm = norm_of(pbar);
 
         unsigned int changes = 0;
         for (unsigned int i = 0; i < nq; ++i)
           {
-            released[i] = unilateral[i] && (p[i] > mu[i] / alpha[i]);
+            released[i] = unilateral[i] && (p[i] > threshold(i));
             changes += (released[i] != released_previous[i]);
           }
         released_previous = released;
 
         // Step 4: multiplier update (eq. 48); afterwards mu = w_n - g. The
-        // pure penalty keeps mu = 0.
+        // pure penalty keeps mu = 0. The diagonal scheme updates with the
+        // piece its single Newton step solved (pressed rows there: pbar =
+        // mu/alpha), since p of a row held at w_n = g says nothing yet about
+        // how far it opens: updating mu by its tension would guess an opening
+        // that the next step undoes, and the set then cycles (measured on
+        // lift-off).
         if (!pure_penalty)
           for (unsigned int i = 0; i < nq; ++i)
-            mu[i] -= alpha[i] * pbar[i];
+            {
+              const double step =
+                (diagonal && unilateral[i] && !solved_released[i]) ?
+                  threshold(i) :
+                  pbar[i];
+              mu[i] -= alpha[i] * step;
+            }
+        for (unsigned int i = 0; i < nq; ++i)
+          opening[i] = (macaulay && !released[i]) ? 0. : mu[i];
 
-        p_history.push_back(p);
-        mu_history.push_back(mu);
-        alpha_history.push_back(alpha);
-        released_history.push_back(released);
-
-        AugmentedLagrangianStep step;
-        step.k              = k;
-        step.newton_steps   = newton_steps;
-        step.alpha_min      = *std::min_element(alpha.begin(), alpha.end());
-        step.alpha_max      = *std::max_element(alpha.begin(), alpha.end());
-        step.eps_k          = eps_k;
-        step.norm_pbar      = norm;
-        step.active_changes = changes;
-        step.seconds        = timer.wall_time();
-        history.push_back(step);
-        log << "    update " << std::setw(3) << k << ": Newton steps "
-            << std::setw(2) << newton_steps << ", ||pbar|| " << std::scientific
-            << std::setprecision(3) << norm << ", alpha [" << step.alpha_min
-            << ", " << step.alpha_max << "], eps " << eps_k << std::defaultfloat
-            << ", status changes " << changes << std::endl;
+        record(k, newton_steps, eps_k, norm, changes, timer.wall_time(), log);
 
         // Step 6: convergence test. The pure penalty is done once the
         // inner solve has reached its exact piece (its own answer, with the
         // tension of the released springs as its error).
-        final_norm_pbar = norm;
         if (pure_penalty ? (k > 1 && last_inner_exact) : norm < tolerance_used)
           {
             converged = true;
@@ -271,58 +411,33 @@ namespace hrcontact
           }
 
         // Step 5: penalty update (eq. 49), within the allowed growth.
-        if (k > 1 && !pure_penalty)
-          {
-            const double alpha_cap = max_penalty_growth * initial_alpha;
-            bool         capped    = false;
-            if (per_constraint)
-              {
-                for (unsigned int i = 0; i < nq; ++i)
-                  if (std::abs(pbar[i]) > delta * std::abs(pbar_previous[i]))
-                    {
-                      capped |= (rho * alpha[i] > alpha_cap);
-                      alpha[i] *= rho;
-                    }
-              }
-            else if (norm > delta * norm_previous)
-              for (double &a : alpha)
-                {
-                  capped |= (rho * a > alpha_cap);
-                  a *= rho;
-                }
-            if (capped)
-              {
-                for (double &a : alpha)
-                  a = std::min(a, alpha_cap);
-                diverged = true;
-                break;
-              }
-          }
+        // The diagonal scheme holds the penalty while the released set still
+        // changes: ||pbar|| then jumps with the set, not with a slow
+        // multiplier iteration.
+        if (k > 1 && !pure_penalty && !(diagonal && changes > 0) &&
+            !update_penalty(
+              alpha, pbar, pbar_previous, norm, norm_previous, initial_alpha))
+          break;
         norm_previous = norm;
         pbar_previous = pbar;
 
-        // Step 2: inner tolerance, made unit free with the load scale.
-        const double relative_pbar = norm / force_scale;
-        eps_k =
-          std::max(eps_min,
-                   std::min(
-                     {eps_max, eps_previous, relative_pbar * relative_pbar}));
-        if (pure_penalty)
-          eps_k = 0; // solve the piece exactly
-        eps_previous = eps_k;
+        eps_k = pure_penalty ? 0. : // solve the piece exactly
+                               inner_tolerance(norm, eps_previous);
 
         // Step 3: Newton steps until the gradient, in contact coordinates
-        // e = [A](mu - alpha p) - balanced, falls by eps_k. A step that keeps
-        // the released set gives e = 0 exactly: the piece is quadratic.
-        newton_steps        = 0;
-        double initial_norm = 0;
+        // e = [A](mu - alpha p) - balanced, falls by eps_k (the diagonal
+        // scheme: one step). A step that keeps the released set gives e = 0
+        // exactly: the piece is quadratic.
+        newton_steps                             = 0;
+        double                      initial_norm = 0;
+        std::set<std::vector<bool>> solved_sets;
         for (;;)
           {
             std::vector<bool>   active(nq);
             std::vector<double> e(nq), term(nq, 0.);
             for (unsigned int i = 0; i < nq; ++i)
               {
-                active[i] = unilateral[i] && p[i] > mu[i] / alpha[i];
+                active[i] = unilateral[i] && p[i] > threshold(i);
                 if (active[i])
                   term[i] = mu[i] - alpha[i] * p[i];
                 e[i] = term[i] - balanced[i];
@@ -332,15 +447,185 @@ namespace hrcontact
               initial_norm = e_norm;
             last_inner_exact = (e_norm == 0);
             if (e_norm == 0 ||
-                (newton_steps > 0 && e_norm <= eps_k * initial_norm) ||
+                (newton_steps > 0 &&
+                 (diagonal || e_norm <= eps_k * initial_norm)) ||
                 newton_steps >= max_newton_steps)
               break;
+            // A piece depends only on its set (mu, alpha are fixed here):
+            // a set seen before in this inner solve means Newton cycles.
+            if (!solved_sets.insert(active).second)
+              {
+                cycled = true;
+                break;
+              }
             path.solve(active, mu, alpha, p);
             for (unsigned int i = 0; i < nq; ++i)
               balanced[i] = active[i] ? mu[i] - alpha[i] * p[i] : 0.;
+            solved_released = active;
             ++newton_steps;
             ++total_newton_steps;
           }
+        if (cycled)
+          break;
+      }
+    log << "  augmented Lagrangian "
+        << (converged ? "converged" : "did NOT converge") << " after "
+        << history.size() << " multiplier updates, " << total_newton_steps
+        << " Newton steps" << std::endl;
+    return converged;
+  }
+
+  bool
+  AugmentedLagrangianSolver::solve_displacement(
+    const EquilibriumSystem &system,
+    const std::vector<bool> &unilateral,
+    NewtonStepPath          &path,
+    const Timer             &timer,
+    std::ostream            &log)
+  {
+    // Eq. 29 on the rows: gamma_i >= 0 is the reaction -p_i, beta_i a
+    // stiffness on the penetration w_i - g_i. A row is in contact when
+    // gamma + beta (w - g) > 0: a spring of stiffness beta anchored at
+    // g - gamma/beta (in the path's terms: compliance 1/beta, mu =
+    // -gamma/beta); otherwise it carries nothing (compliance infinity, so
+    // the path adds no spring). Bilateral rows stay held at w_n = g. Start:
+    // gamma from the trial reactions, w_n = g.
+    const unsigned int  nq    = unilateral.size();
+    const double        beta0 = 1. / initial_alpha;
+    std::vector<double> gamma(nq, 0.), beta(nq, beta0), gap(nq, 0.);
+    for (unsigned int i = 0; i < nq; ++i)
+      if (unilateral[i])
+        gamma[i] = std::max(0., -p[i]);
+
+    std::vector<bool> contact(nq), contact_previous(nq, true),
+      solved_contact(nq, true);
+    std::vector<double> path_mu(nq, 0.), path_alpha(nq, 1.), w(nq);
+    std::vector<double> balanced(nq, 0.), change(nq, 0.),
+      change_previous(nq, 0.);
+    double       norm_previous = std::numeric_limits<double>::max();
+    double       eps_previous  = eps_max;
+    double       eps_k         = eps_max;
+    bool         first         = true;
+    const double infinity      = std::numeric_limits<double>::infinity();
+
+    // The spring force the current set and gap ask for at row i.
+    auto spring_force = [&](const unsigned int i) {
+      return gamma[i] + beta[i] * gap[i];
+    };
+
+    for (unsigned int k = 1;; ++k)
+      {
+        // Step 3: Newton steps on u for fixed gamma, beta (the diagonal
+        // scheme: one).
+        unsigned int                newton_steps = 0;
+        double                      initial_norm = 0;
+        std::set<std::vector<bool>> solved_sets;
+        for (;;)
+          {
+            std::vector<double> e(nq);
+            for (unsigned int i = 0; i < nq; ++i)
+              {
+                contact[i] = !unilateral[i] || spring_force(i) > 0;
+                const double term =
+                  (unilateral[i] && contact[i]) ? spring_force(i) : 0.;
+                e[i] = unilateral[i] ? term - balanced[i] : 0.;
+              }
+            const double e_norm = first ? 1. : norm_of(e);
+            if (newton_steps == 0)
+              initial_norm = e_norm;
+            if (e_norm == 0 ||
+                (newton_steps > 0 &&
+                 (diagonal || e_norm <= eps_k * initial_norm)) ||
+                newton_steps >= max_newton_steps)
+              break;
+            // The first step after an update solves the last piece with the
+            // new anchors: the set read off the old gaps and the new gamma
+            // counts the penetration twice (gamma + beta (w - g) = 2 F -
+            // gamma_old for a spring that carried F), and on Hertz it frees
+            // every row, a piece on which the body floats.
+            // (The diagonal scheme has that one step only, so it must read
+            // the set afresh.)
+            if (newton_steps == 0 && !first && !diagonal)
+              contact = solved_contact;
+            std::vector<bool> springs(nq, false);
+            for (unsigned int i = 0; i < nq; ++i)
+              if (unilateral[i])
+                {
+                  springs[i]    = true;
+                  path_alpha[i] = contact[i] ? 1. / beta[i] : infinity;
+                  path_mu[i]    = contact[i] ? -gamma[i] / beta[i] : 0.;
+                }
+            if (!solved_sets.insert(contact).second)
+              {
+                cycled = true;
+                break;
+              }
+            path.solve(springs, path_mu, path_alpha, p);
+            solved_contact = contact;
+            path.contact_displacements(w);
+            for (unsigned int i = 0; i < nq; ++i)
+              {
+                gap[i] = unilateral[i] ?
+                           w[i] - system.rows[system.contact_rows[i]].value :
+                           0.;
+                balanced[i] =
+                  (unilateral[i] && contact[i]) ? spring_force(i) : 0.;
+              }
+            first = false;
+            ++newton_steps;
+            ++total_newton_steps;
+          }
+
+        if (cycled)
+          break;
+        // Step 4: gamma <- max(0, gamma + beta (w - g)) on the piece the
+        // last Newton step solved: a row free there gets gamma = 0, not beta
+        // times a penetration nothing resisted (with beta stiff against the
+        // mesh that guess throws the body off the obstacle). The convergence
+        // measure is the full one of eq. 29, max(-gamma, beta (w - g)): it
+        // sees such a row penetrate.
+        unsigned int changes = 0;
+        for (unsigned int i = 0; i < nq; ++i)
+          {
+            change[i] =
+              unilateral[i] ? std::max(-gamma[i], beta[i] * gap[i]) : 0.;
+            gamma[i] = (unilateral[i] && solved_contact[i]) ?
+                         std::max(0., spring_force(i)) :
+                         0.;
+            changes += (contact[i] != contact_previous[i]);
+          }
+        contact_previous  = contact;
+        const double norm = norm_of(change);
+
+        for (unsigned int i = 0; i < nq; ++i)
+          {
+            mu[i]       = unilateral[i] ? gap[i] : 0.;
+            opening[i]  = mu[i];
+            alpha[i]    = unilateral[i] ? 1. / beta[i] : initial_alpha;
+            released[i] = unilateral[i] && !contact[i];
+          }
+        record(k, newton_steps, eps_k, norm, changes, timer.wall_time(), log);
+
+        // Step 6, with the change of the reactions in place of pbar.
+        if (norm < tolerance_used)
+          {
+            converged = true;
+            break;
+          }
+        if (k >= max_updates)
+          break;
+        if (!std::isfinite(norm) || norm > 1e6 * force_scale)
+          {
+            diverged = true;
+            break;
+          }
+        if (k > 1 && !(diagonal && changes > 0) &&
+            !update_penalty(
+              beta, change, change_previous, norm, norm_previous, beta0))
+          break;
+        norm_previous   = norm;
+        change_previous = change;
+        eps_k           = inner_tolerance(norm, eps_previous);
       }
     log << "  augmented Lagrangian "
         << (converged ? "converged" : "did NOT converge") << " after "

@@ -159,6 +159,17 @@ namespace hrcontact
       const double m           = std::max(0., tau - n);
       const double dense_bytes = 8 * (tau * n + n * m + 2 * m * m);
       solution_path            = reduction.path;
+      const bool displacement_al =
+        (contact_solver.regularisation ==
+         AugmentedLagrangianSolver::Regularisation::displacement);
+      if (displacement_al && solution_path == "null-space")
+        throw InputError(
+          "Augmented Lagrangian/Regularisation = displacement augmented "
+          "Lagrangian needs Equilibrium reduction/Path = condensed (or "
+          "automatic): the null-space path cannot leave a contact node free of "
+          "both a spring and a support.");
+      if (displacement_al)
+        solution_path = "condensed";
       if (solution_path == "automatic")
         solution_path = (dense_bytes <= reduction.automatic_dense_limit) ?
                           "null-space" :
@@ -206,8 +217,8 @@ namespace hrcontact
         contact_solver.solve(system, *path, load_scale, log);
         // After the last multiplier update mu = w_n - g (pressed: mu = 0).
         for (unsigned int k = 0; k < nq; ++k)
-          contact_w[k] =
-            system.rows[system.contact_rows[k]].value + contact_solver.mu[k];
+          contact_w[k] = system.rows[system.contact_rows[k]].value +
+                         contact_solver.opening[k];
       }
     else
       {
@@ -619,6 +630,23 @@ namespace hrcontact
     output_results(log);
     if (output.print_timing)
       timer.print_summary();
+    if (has_contact && contact_solver.cycled)
+      throw NotConvergedError(
+        "the inner Newton iteration of multiplier update " +
+        std::to_string(contact_solver.history.size() + 1) +
+        " cycles: it came back to a released set it had already solved, so "
+        "it would never reach its tolerance. " +
+        std::string(
+          contact_solver.regularisation ==
+              AugmentedLagrangianSolver::Regularisation::macaulay ?
+            "The Macaulay bracket (p)_+ has a kink at p = 0 wherever mu is "
+            "not 0, so its pieces do not join with a continuous slope. Use the "
+            "consistent augmented Lagrangian, or Iteration scheme = diagonal." :
+            "The pieces join smoothly, so the solves have lost their digits: "
+            "the usual cause is an Initial penalty far larger than the nodal "
+            "compliance of the mesh (released springs that no longer hold the "
+            "body). Reduce Augmented Lagrangian/Initial penalty.") +
+        " Results were written with converged = false.");
     if (has_contact && contact_solver.diverged)
       {
         std::ostringstream s;

@@ -539,4 +539,26 @@ namespace hrcontact
   {
     displacement = u;
   }
+
+  void
+  CondensedStep::contact_displacements(std::vector<double> &w) const
+  {
+    w.resize(system.contact_rows.size());
+    for (unsigned int i = 0; i < w.size(); ++i)
+      {
+        w[i] = 0;
+        for (const auto &[a, ca] :
+             system.rows[system.contact_rows[i]].combination)
+          w[i] += ca * u[a];
+      }
+  }
+
+  void
+  NewtonStepPath::contact_displacements(std::vector<double> &) const
+  {
+    throw InputError(
+      "this Newton-step path cannot give the normal displacement of a "
+      "contact node without a spring (the displacement-based augmented "
+      "Lagrangian needs Equilibrium reduction/Path = condensed).");
+  }
 } // namespace hrcontact

@@ -2,6 +2,7 @@
 #define hrcontact_augmented_lagrangian_solver_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 
 #include <deal.II/lac/vector.h>
 
@@ -86,28 +87,96 @@ namespace hrcontact
     double rho                 = 10;
     double delta               = 0.25;
     bool   per_constraint      = false;
-    /** Pure quadratic penalty: no multiplier updates, fixed alpha. */
-    bool         pure_penalty = false;
+    /**
+     * The regularisation of the unilateral constraint (section 3.3):
+     * consistent: the paper's eq. 26/28, pbar = max(p, mu/alpha);
+     * macaulay: eq. 27 on the same constraint p <= 0, pbar = (p)_+;
+     * pure_penalty: mu = 0 and alpha fixed, one exact piece;
+     * displacement: eq. 29, multiplier gamma (a reaction) and stiffness beta
+     * on w_n - g (needs the condensed path).
+     */
+    enum class Regularisation
+    {
+      consistent,
+      macaulay,
+      pure_penalty,
+      displacement
+    };
+    Regularisation regularisation = Regularisation::consistent;
+    bool           pure_penalty   = false;
+    /**
+     * Section 4.4: classical (inner Newton to eps_k, then one multiplier
+     * update) or diagonal (one Newton step, then one multiplier update).
+     */
+    bool         diagonal = false;
     double       eps_min = 1e-12, eps_max = 1e-2;
     double       absolute_tolerance = 0, relative_tolerance = 1e-10;
     unsigned int max_updates = 100, max_newton_steps = 50;
     double       max_penalty_growth = 1e16;
 
     // Results, one entry per Q row (bilateral rows: mu = 0, always pressed).
-    std::vector<double>                  p, mu, alpha;
-    std::vector<bool>                    released;
+    std::vector<double> p, mu, alpha;
+    std::vector<bool>   released;
+    /**
+     * w_n - g per Q row after the last update: mu for the consistent AL
+     * (pressed rows have mu = 0), mu or 0 (pressed) for the Macaulay AL, the
+     * measured value for the displacement AL.
+     */
+    std::vector<double>                  opening;
     std::vector<AugmentedLagrangianStep> history;
-    /** Per multiplier update k: p of the solve, mu after the update (so that
-     * w_n = g + mu), alpha used, and the released flags. */
+    /** Per multiplier update k: p of the solve, w_n - g after the update
+     * (the opening), alpha used (1/beta for the displacement AL), and the
+     * released flags. */
     std::vector<std::vector<double>> p_history, mu_history, alpha_history;
     std::vector<std::vector<bool>>   released_history;
     bool                             converged = false;
     /** ||pbar|| became non-finite or exceeded 1e6 x the load scale, or alpha
      * would grow beyond max_penalty_growth x initial_alpha. */
-    bool         diverged           = false;
+    bool diverged = false;
+    /**
+     * An inner Newton iteration met a released set it had already solved:
+     * Newton cycles between pieces and would never reach eps_k (the kink of
+     * the Macaulay bracket at p = 0 does this).
+     */
+    bool         cycled             = false;
     unsigned int total_newton_steps = 0;
     double       final_norm_pbar    = 0;
     double       tolerance_used     = 0;
+
+  private:
+    /** The displacement AL of eq. 29 (Regularisation = displacement). */
+    bool
+    solve_displacement(const EquilibriumSystem &system,
+                       const std::vector<bool> &unilateral,
+                       NewtonStepPath          &path,
+                       const dealii::Timer     &timer,
+                       std::ostream            &log);
+    /** Append a row to history and print it. */
+    void
+    record(const unsigned int k,
+           const unsigned int newton_steps,
+           const double       eps_k,
+           const double       norm,
+           const unsigned int changes,
+           const double       seconds,
+           std::ostream      &log);
+    /**
+     * Penalty update of eq. 49 on `penalty` (alpha, or beta for the
+     * displacement AL) from the constraint residual r; false when the growth
+     * limit was hit (then diverged is set).
+     */
+    bool
+    update_penalty(std::vector<double>       &penalty,
+                   const std::vector<double> &r,
+                   const std::vector<double> &r_previous,
+                   const double               norm,
+                   const double               norm_previous,
+                   const double               initial);
+    /** eps_k of Step 2 from the relative residual. */
+    double
+    inner_tolerance(const double norm, double &eps_previous) const;
+
+    double force_scale = 1;
   };
 } // namespace hrcontact
 

@@ -90,6 +90,14 @@ namespace hrcontact
     displacements(const std::vector<double> &contact_w,
                   dealii::Vector<double>    &u) const = 0;
 
+    /**
+     * w_n = d . u of every Q row after the last solve, needed by the
+     * displacement AL for rows without a spring. The null-space path knows u
+     * only through the rows' w_n, so it cannot (and throws InputError).
+     */
+    virtual void
+    contact_displacements(std::vector<double> &w) const;
+
     /** Linear solver counters (zero for the dense path). */
     LinearSolverStatistics statistics;
   };
@@ -151,6 +159,8 @@ namespace hrcontact
     void
     displacements(const std::vector<double> &contact_w,
                   dealii::Vector<double>    &u) const override;
+    void
+    contact_displacements(std::vector<double> &w) const override;
 
   private:
     /** Solve A u = rhs by CG + AMG (u holds the initial guess). */
