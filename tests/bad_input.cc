@@ -21,6 +21,7 @@ main()
                                  "incompressible",
                                  "impossible-tunnel",
                                  "support-and-constraint",
+                                 "displacement-al-null-space",
                                  "no-such-file"})
     {
       std::filesystem::remove_all("should-not-exist");
