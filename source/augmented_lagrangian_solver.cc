@@ -305,6 +305,7 @@ namespace hrcontact
     converged          = false;
     diverged           = false;
     cycled             = false;
+    floating           = false;
 
     // Step 0: trial solution, every constraint bilateral with w_n = g.
     path.solve(released, mu, alpha, p);
@@ -400,6 +401,16 @@ namespace hrcontact
           }
         if (k >= max_updates)
           break;
+        // Floating: every unilateral row released and none pushing (a
+        // released row of the consistent AL may still carry compression).
+        if (held_only_by_contact &&
+            std::equal(released.begin(), released.end(), unilateral.begin()) &&
+            std::none_of(p.begin(), p.end(), [](double x) { return x < 0; }))
+          {
+            floating        = true;
+            floating_update = k;
+            break;
+          }
         // A released spring far softer than the mesh (alpha much larger than
         // the nodal compliance) leaves the body all but unsupported: the
         // solves lose every digit and ||pbar|| explodes. Stop, do not iterate
@@ -555,6 +566,14 @@ namespace hrcontact
                   path_alpha[i] = contact[i] ? 1. / beta[i] : infinity;
                   path_mu[i]    = contact[i] ? -gamma[i] / beta[i] : 0.;
                 }
+            if (held_only_by_contact && std::none_of(contact.begin(),
+                                                     contact.end(),
+                                                     [](bool c) { return c; }))
+              {
+                floating        = true;
+                floating_update = k;
+                break;
+              }
             if (!solved_sets.insert(contact).second)
               {
                 cycled = true;
@@ -576,7 +595,7 @@ namespace hrcontact
             ++total_newton_steps;
           }
 
-        if (cycled)
+        if (cycled || floating)
           break;
         // Step 4: gamma <- max(0, gamma + beta (w - g)) on the piece the
         // last Newton step solved: a row free there gets gamma = 0, not beta

@@ -1,5 +1,9 @@
+#include <deal.II/lac/lapack_full_matrix.h>
+
 #include <hrcontact/equilibrium_system.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -92,5 +96,65 @@ namespace hrcontact
       s << (d ? ", " : "") << std::setprecision(3) << dir[d];
     s << ")";
     return s.str();
+  }
+  unsigned int
+  rigid_motions_held_only_by_contact(const EquilibriumSystem &system)
+  {
+    const unsigned int dim     = system.dim;
+    const unsigned int n_modes = (dim == 2) ? 3 : 6;
+    // Rotations about the centroid, scaled by the body's size, so that the
+    // Gram matrix of translations and rotations is balanced.
+    std::array<double, 3> centre = {{0, 0, 0}};
+    for (const auto &x : system.node_coordinates)
+      for (unsigned int d = 0; d < 3; ++d)
+        centre[d] += x[d] / system.node_coordinates.size();
+    double size = 0;
+    for (const auto &x : system.node_coordinates)
+      for (unsigned int d = 0; d < 3; ++d)
+        size = std::max(size, std::abs(x[d] - centre[d]));
+    size = std::max(size, 1e-300);
+
+    dealii::LAPACKFullMatrix<double> gram(n_modes, n_modes);
+    auto                             add_row = [&](const EquilibriumRow &row) {
+      const auto           &x = row.node < system.node_coordinates.size() ?
+                                                              system.node_coordinates[row.node] :
+                                                              centre;
+      std::array<double, 3> r = {{(x[0] - centre[0]) / size,
+                                  (x[1] - centre[1]) / size,
+                                  (x[2] - centre[2]) / size}};
+      // d . m for the modes: translations e_k, rotations (-y, x, 0),
+      // (0, -z, y), (z, 0, -x).
+      std::array<double, 3> d = {{0, 0, 0}};
+      for (unsigned int k = 0; k < row.combination.size() && k < dim; ++k)
+        d[k] = row.combination[k].second;
+      std::vector<double> v(n_modes, 0.);
+      for (unsigned int k = 0; k < dim; ++k)
+        v[k] = d[k];
+      v[dim] = -r[1] * d[0] + r[0] * d[1];
+      if (dim == 3)
+        {
+          v[4] = -r[2] * d[1] + r[1] * d[2];
+          v[5] = r[2] * d[0] - r[0] * d[2];
+        }
+      for (unsigned int a = 0; a < n_modes; ++a)
+        for (unsigned int b = 0; b < n_modes; ++b)
+          gram(a, b) += v[a] * v[b];
+    };
+    for (const unsigned int r : system.prescribed_rows)
+      add_row(system.rows[r]);
+    for (const unsigned int r : system.contact_rows)
+      if (!system.rows[r].unilateral)
+        add_row(system.rows[r]);
+
+    dealii::Vector<double>     eigenvalues;
+    dealii::FullMatrix<double> vectors;
+    gram.compute_eigenvalues_symmetric(-1., 1e300, 0., eigenvalues, vectors);
+    double largest = 0;
+    for (unsigned int k = 0; k < eigenvalues.size(); ++k)
+      largest = std::max(largest, eigenvalues[k]);
+    unsigned int free = n_modes - eigenvalues.size();
+    for (unsigned int k = 0; k < eigenvalues.size(); ++k)
+      free += (eigenvalues[k] <= 1e-10 * std::max(largest, 1.));
+    return free;
   }
 } // namespace hrcontact

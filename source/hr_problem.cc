@@ -214,6 +214,8 @@ namespace hrcontact
             c_h /= std::cbrt(volume / triangulation.n_active_cells());
           }
         contact_solver.set_nodal_compliance(c_h);
+        free_rigid_motions = rigid_motions_held_only_by_contact(system);
+        contact_solver.held_only_by_contact = (free_rigid_motions > 0);
         contact_solver.solve(system, *path, load_scale, log);
         // After the last multiplier update mu = w_n - g (pressed: mu = 0).
         for (unsigned int k = 0; k < nq; ++k)
@@ -623,6 +625,18 @@ namespace hrcontact
   }
 
   template <int dim>
+  std::string
+  HRProblem<dim>::mechanism_hint() const
+  {
+    if (free_rigid_motions == 0)
+      return "";
+    return " Note: only the contacts hold this body along " +
+           std::to_string(free_rigid_motions) +
+           " rigid-body motion(s); if the loads pull it off its obstacles, no "
+           "equilibrium exists (a mechanism).";
+  }
+
+  template <int dim>
   void
   HRProblem<dim>::run(std::ostream &log)
   {
@@ -630,6 +644,16 @@ namespace hrcontact
     output_results(log);
     if (output.print_timing)
       timer.print_summary();
+    if (has_contact && contact_solver.floating)
+      throw NotConvergedError(
+        "every contact constraint released at multiplier update " +
+        std::to_string(contact_solver.floating_update) +
+        ", and nothing else holds the body: the supports leave " +
+        std::to_string(free_rigid_motions) +
+        " rigid-body motion(s) free, and the loads pull the body off its "
+        "obstacles along them (a mechanism: no equilibrium exists). Check "
+        "the direction of the loads, the obstacles' normals and the "
+        "supports. Results were written with converged = false.");
     if (has_contact && contact_solver.cycled)
       throw NotConvergedError(
         "the inner Newton iteration of multiplier update " +
@@ -646,7 +670,7 @@ namespace hrcontact
             "the usual cause is an Initial penalty far larger than the nodal "
             "compliance of the mesh (released springs that no longer hold the "
             "body). Reduce Augmented Lagrangian/Initial penalty.") +
-        " Results were written with converged = false.");
+        mechanism_hint() + " Results were written with converged = false.");
     if (has_contact && contact_solver.diverged)
       {
         std::ostringstream s;
@@ -660,8 +684,9 @@ namespace hrcontact
              "compliance of the mesh: far larger, the released springs no "
              "longer hold the body and the solves lose their digits; far "
              "smaller, alpha cannot grow enough. Adjust Augmented "
-             "Lagrangian/Initial penalty. Results were written with "
-             "converged = false.";
+             "Lagrangian/Initial penalty."
+          << mechanism_hint()
+          << " Results were written with converged = false.";
         throw NotConvergedError(s.str());
       }
     if (has_contact && !contact_solver.converged)

@@ -138,7 +138,18 @@ namespace hrcontact
      * Newton cycles between pieces and would never reach eps_k (the kink of
      * the Macaulay bracket at p = 0 does this).
      */
-    bool         cycled             = false;
+    bool cycled = false;
+    /**
+     * Set before solve: some rigid-body motion of the body is held by
+     * unilateral contacts only (rigid_motions_held_only_by_contact > 0).
+     * Then an update that finds every unilateral row released, without
+     * having converged, means the loads pull the body off its obstacles:
+     * the solve stops with `floating`.
+     */
+    bool held_only_by_contact = false;
+    bool floating             = false;
+    /** The multiplier update during which floating was detected. */
+    unsigned int floating_update    = 0;
     unsigned int total_newton_steps = 0;
     double       final_norm_pbar    = 0;
     double       tolerance_used     = 0;

@@ -98,6 +98,16 @@ namespace hrcontact
     std::string
     describe_node(const unsigned int node) const;
   };
+  /**
+   * The number of rigid-body motions (translations and rotations) that the
+   * prescribed rows and the bilateral Q rows leave free: the motions along
+   * which only unilateral contacts hold the body. A motion m is held when
+   * some such row has d . m(x) != 0 at its node; the count is the dimension
+   * of the null space of those rows restricted to the rigid motions.
+   */
+  unsigned int
+  rigid_motions_held_only_by_contact(const EquilibriumSystem &system);
+
 } // namespace hrcontact
 
 #endif

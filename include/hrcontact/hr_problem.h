@@ -84,6 +84,8 @@ namespace hrcontact
     std::string solution_path;
     /** True when the scene has unilateral contact constraints. */
     bool has_contact = false;
+    /** Rigid-body motions only the unilateral contacts hold. */
+    unsigned int free_rigid_motions = 0;
     /** Normal displacement w_n per Q row (g + mu after the last update). */
     std::vector<double> contact_w;
     /** p = Q s - q per contact row; r = H s - f_H per prescribed row. */
@@ -91,6 +93,9 @@ namespace hrcontact
     Summary             summary;
 
   private:
+    /** A sentence for stop messages when contacts alone hold the body. */
+    std::string
+    mechanism_hint() const;
     void
     write_contact_tables() const;
     /** Pressures from nodal reactions, contact zone, Hertz comparison. */
