@@ -387,7 +387,12 @@ namespace hrcontact
               mu[i] -= alpha[i] * step;
             }
         for (unsigned int i = 0; i < nq; ++i)
-          opening[i] = (macaulay && !released[i]) ? 0. : mu[i];
+          // w_n - g: pressed rows sit on the obstacle; released rows of the
+          // pure penalty are springs anchored at the gap (mu = 0), so they
+          // open by -alpha p; otherwise the update made mu = w_n - g.
+          opening[i] = !released[i] ? (macaulay || pure_penalty ? 0. : mu[i]) :
+                       pure_penalty ? mu[i] - alpha[i] * p[i] :
+                                      mu[i];
 
         record(k, newton_steps, eps_k, norm, changes, timer.wall_time(), log);
 
