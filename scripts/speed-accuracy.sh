@@ -24,8 +24,7 @@
 #     the constraint violation: largest tension max(p_n, 0) / max |p_n| and
 #     largest penetration max(w_n - g, 0) / max |u|; the complementarity
 #     max |p_n (w_n - g)| / (max |p_n| max |w_n - g|). w_n is the column of
-#     contact.csv (g + the opening the solver keeps, i.e. the multiplier mu;
-#     the pure penalty keeps mu = 0, so there w_n = g on every row);
+#     contact.csv (g + the opening the solver keeps);
 #     penetration and complementarity are also measured with the normal
 #     displacement of the computed displacement field, u.n (columns ux, uy,
 #     nx, ny of contact.csv).

@@ -306,6 +306,8 @@ namespace hrcontact
     diverged           = false;
     cycled             = false;
     floating           = false;
+    roundoff_limited   = false;
+    roundoff_floor     = 0;
 
     // Step 0: trial solution, every constraint bilateral with w_n = g.
     path.solve(released, mu, alpha, p);
@@ -643,6 +645,26 @@ namespace hrcontact
             diverged = true;
             break;
           }
+        // The round-off floor of the change: beta times the rounding of w_n
+        // (a few |w| eps per row in contact; rows out of contact change by
+        // -gamma, exactly). Below it ||change|| is noise, and eq. 49 would
+        // only grow beta and the noise with it: stop and say so.
+        {
+          double floor = 0;
+          for (unsigned int i = 0; i < nq; ++i)
+            if (unilateral[i] && contact[i])
+              {
+                const double r = 4 * std::numeric_limits<double>::epsilon() *
+                                 beta[i] * std::abs(w[i]);
+                floor += r * r;
+              }
+          roundoff_floor = std::sqrt(floor);
+          if (norm <= roundoff_floor)
+            {
+              roundoff_limited = true;
+              break;
+            }
+        }
         if (k > 1 && !(diagonal && changes > 0) &&
             !update_penalty(
               beta, change, change_previous, norm, norm_previous, beta0))

@@ -654,6 +654,21 @@ namespace hrcontact
         "obstacles along them (a mechanism: no equilibrium exists). Check "
         "the direction of the loads, the obstacles' normals and the "
         "supports. Results were written with converged = false.");
+    if (has_contact && contact_solver.roundoff_limited)
+      {
+        std::ostringstream s;
+        s << "the displacement augmented Lagrangian reached its round-off "
+             "floor at multiplier update "
+          << contact_solver.history.size() << ": the change of the reactions, "
+          << contact_solver.final_norm_pbar
+          << ", is below what rounding of the displacements allows at this "
+             "stiffness (beta x eps x |w_n| = "
+          << contact_solver.roundoff_floor << ") but above the tolerance "
+          << contact_solver.tolerance_used
+          << ". Loosen Augmented Lagrangian/Relative tolerance or reduce "
+             "Initial penalty. Results were written with converged = false.";
+        throw NotConvergedError(s.str());
+      }
     if (has_contact && contact_solver.cycled)
       throw NotConvergedError(
         "the inner Newton iteration of multiplier update " +

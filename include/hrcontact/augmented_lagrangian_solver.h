@@ -147,7 +147,13 @@ namespace hrcontact
      * the solve stops with `floating`.
      */
     bool held_only_by_contact = false;
-    bool floating             = false;
+    /**
+     * Displacement AL: ||change|| fell to its round-off floor (beta times
+     * the rounding of w_n) above the tolerance: stopped, not converged.
+     */
+    bool   roundoff_limited = false;
+    double roundoff_floor   = 0;
+    bool   floating         = false;
     /** The multiplier update during which floating was detected. */
     unsigned int floating_update    = 0;
     unsigned int total_newton_steps = 0;
