@@ -456,7 +456,7 @@ PARETO_SLACK = 2.0
 plotdir = os.path.join(WORK, "plot")
 os.makedirs(plotdir, exist_ok=True)
 colours = ["#1f77b4", "#17becf", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd"]
-filled = {"classical": [7, 5, 9, 11, 13], "diagonal": [6, 4, 8, 10, 12]}
+filled = {"classical": [7, 15, 5, 9, 11, 13], "diagonal": [6, 14, 4, 8, 10, 12]}
 axes = [("wall_median_s", "median wall time (s)"), ("linear_solves", "linear solves")]
 ok = [r for r in records if r["status"] == "converged" and math.isfinite(r["err_ref"])]
 levels_of = {scene: levels for scene, _, levels in SCENES}
