@@ -525,6 +525,7 @@ namespace hrcontact
     double       eps_k         = eps_max;
     bool         first         = true;
     const double infinity      = std::numeric_limits<double>::infinity();
+    bool         beta_grew     = false;
 
     // The spring force the current set and gap ask for at row i.
     auto spring_force = [&](const unsigned int i) {
@@ -659,16 +660,25 @@ namespace hrcontact
                 floor += r * r;
               }
           roundoff_floor = std::sqrt(floor);
-          if (norm <= roundoff_floor)
+          // The linear solver's tolerance leaves a floor of its own (CG +
+          // AMG: far above rounding): the sign is a change that grew by the
+          // factor rho with beta, with the set fixed.
+          const bool noise =
+            beta_grew && changes == 0 && norm > 0.5 * rho * norm_previous;
+          if (noise)
+            roundoff_floor = std::max(roundoff_floor, norm_previous);
+          if (norm <= roundoff_floor || noise)
             {
               roundoff_limited = true;
               break;
             }
         }
+        const std::vector<double> beta_before = beta;
         if (k > 1 && !(diagonal && changes > 0) &&
             !update_penalty(
               beta, change, change_previous, norm, norm_previous, beta0))
           break;
+        beta_grew       = (beta != beta_before);
         norm_previous   = norm;
         change_previous = change;
         eps_k           = inner_tolerance(norm, eps_previous);

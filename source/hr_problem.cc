@@ -661,12 +661,14 @@ namespace hrcontact
              "floor at multiplier update "
           << contact_solver.history.size() << ": the change of the reactions, "
           << contact_solver.final_norm_pbar
-          << ", is below what rounding of the displacements allows at this "
-             "stiffness (beta x eps x |w_n| = "
-          << contact_solver.roundoff_floor << ") but above the tolerance "
+          << ", has reached the noise floor that the rounding of the "
+             "displacements and the linear solver's tolerance leave at this "
+             "stiffness (about "
+          << contact_solver.roundoff_floor << "), above the tolerance "
           << contact_solver.tolerance_used
-          << ". Loosen Augmented Lagrangian/Relative tolerance or reduce "
-             "Initial penalty. Results were written with converged = false.";
+          << ". Loosen Augmented Lagrangian/Relative tolerance, reduce "
+             "Initial penalty, or tighten Linear solver/Tolerance. Results "
+             "were written with converged = false.";
         throw NotConvergedError(s.str());
       }
     if (has_contact && contact_solver.cycled)
