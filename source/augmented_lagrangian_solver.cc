@@ -123,7 +123,7 @@ namespace hrcontact
       "Section 4.4. classical: Newton steps until the inner tolerance eps_k, "
       "then one multiplier update. diagonal: one Newton step, then one "
       "multiplier update (for the stress variants the update of a row uses "
-      "the piece that step solved).");
+      "the piece that step solved). The pure penalty ignores this entry.");
     prm.declare_entry("Maximum Newton steps",
                       "50",
                       Patterns::Integer(1),
@@ -142,7 +142,6 @@ namespace hrcontact
                                    "Augmented Lagrangian/Initial penalty");
     scale_by_compliance =
       (prm.get("Initial penalty scaling") == "nodal compliance");
-    initial_alpha = initial_penalty;
     if (!(initial_penalty > 0))
       throw InputError(
         "Augmented Lagrangian/Initial penalty must be positive.");
@@ -163,11 +162,12 @@ namespace hrcontact
                        (r == "displacement augmented Lagrangian") ?
                                                Regularisation::displacement :
                                                Regularisation::consistent;
-      pure_penalty   = (regularisation == Regularisation::pure_penalty);
     }
-    diagonal = (prm.get("Iteration scheme") == "diagonal");
-    if (regularisation == Regularisation::displacement)
-      initial_alpha = 1. / initial_penalty;
+    // The pure penalty has no multiplier updates to interleave.
+    diagonal = (prm.get("Iteration scheme") == "diagonal") &&
+               regularisation != Regularisation::pure_penalty;
+    // alpha_0 before the mesh is known: c_h = 1 (set_nodal_compliance sets it).
+    set_nodal_compliance(1.);
     max_penalty_growth = prm.get_double("Maximum penalty growth");
     prm.leave_subsection();
     if (eps_min > eps_max)
@@ -318,7 +318,8 @@ namespace hrcontact
     tolerance_used = std::max(absolute_tolerance, relative_tolerance * scale);
     force_scale    = std::max(scale, 1e-300);
 
-    const bool macaulay = (regularisation == Regularisation::macaulay);
+    const bool macaulay     = (regularisation == Regularisation::macaulay);
+    const bool pure_penalty = (regularisation == Regularisation::pure_penalty);
     log << "  augmented Lagrangian ("
         << (regularisation == Regularisation::consistent   ? "consistent" :
             macaulay                                       ? "Macaulay" :

@@ -103,7 +103,6 @@ namespace hrcontact
       displacement
     };
     Regularisation regularisation = Regularisation::consistent;
-    bool           pure_penalty   = false;
     /**
      * Section 4.4: classical (inner Newton to eps_k, then one multiplier
      * update) or diagonal (one Newton step, then one multiplier update).
