@@ -189,6 +189,19 @@ namespace hrcontact
         scale_by_compliance ? initial_penalty * c : initial_penalty;
   }
 
+  const ConstraintLaw &
+  AugmentedLagrangianSolver::law_of(const EquilibriumRow &row) const
+  {
+    static const BilateralConstraint       bilateral;
+    static const UnilateralContact         consistent;
+    static const MacaulayUnilateralContact macaulay;
+    if (row.law)
+      return *row.law;
+    if (!row.unilateral)
+      return bilateral;
+    return (regularisation == Regularisation::macaulay) ? macaulay : consistent;
+  }
+
   namespace
   {
     double
@@ -288,8 +301,13 @@ namespace hrcontact
   {
     const unsigned int nq = system.contact_rows.size();
     std::vector<bool>  unilateral(nq);
+    law.assign(nq, nullptr);
     for (unsigned int i = 0; i < nq; ++i)
-      unilateral[i] = system.rows[system.contact_rows[i]].unilateral;
+      {
+        const EquilibriumRow &row = system.rows[system.contact_rows[i]];
+        unilateral[i]             = row.unilateral && !row.law;
+        law[i]                    = &law_of(row);
+      }
 
     Timer timer;
     mu.assign(nq, 0.);
@@ -310,7 +328,10 @@ namespace hrcontact
     roundoff_floor     = 0;
 
     // Step 0: trial solution, every constraint bilateral with w_n = g.
-    path.solve(released, mu, alpha, p);
+    pieces.resize(nq);
+    for (unsigned int i = 0; i < nq; ++i)
+      pieces[i] = law[i]->trial_piece();
+    path.solve(pieces, p);
 
     double scale = std::abs(load_scale);
     for (unsigned int i = 0; i < nq; ++i)
@@ -318,13 +339,12 @@ namespace hrcontact
     tolerance_used = std::max(absolute_tolerance, relative_tolerance * scale);
     force_scale    = std::max(scale, 1e-300);
 
-    const bool macaulay     = (regularisation == Regularisation::macaulay);
     const bool pure_penalty = (regularisation == Regularisation::pure_penalty);
     log << "  augmented Lagrangian ("
-        << (regularisation == Regularisation::consistent   ? "consistent" :
-            macaulay                                       ? "Macaulay" :
-            regularisation == Regularisation::pure_penalty ? "pure penalty" :
-                                                             "displacement")
+        << (regularisation == Regularisation::consistent ? "consistent" :
+            regularisation == Regularisation::macaulay   ? "Macaulay" :
+            pure_penalty                                 ? "pure penalty" :
+                                                           "displacement")
         << ", " << (diagonal ? "diagonal" : "classical") << "): " << nq
         << " contact constraints, initial "
         << (regularisation == Regularisation::displacement ? "stiffness beta " :
@@ -339,63 +359,67 @@ namespace hrcontact
         << std::endl;
 
     if (regularisation == Regularisation::displacement)
-      return solve_displacement(system, unilateral, path, timer, log);
+      {
+        for (unsigned int i = 0; i < nq; ++i)
+          if (!unilateral[i] && law[i]->has_multiplier())
+            throw InputError(
+              "Augmented Lagrangian/Regularisation = displacement augmented "
+              "Lagrangian is implemented for unilateral contact only; " +
+              system.describe_row(system.contact_rows[i]) + " has the law '" +
+              law[i]->name() + "'. Take the consistent augmented Lagrangian.");
+        return solve_displacement(system, unilateral, path, timer, log);
+      }
 
-    // The release threshold: p > mu/alpha (eq. 26), p > 0 (eq. 27).
-    auto threshold = [&](const unsigned int i) {
-      return macaulay ? 0. : mu[i] / alpha[i];
-    };
-    // The contact force term the last solve balanced: [A](mu - alpha p),
-    // and the set A of that solve.
-    std::vector<double> balanced(nq, 0.);
-    std::vector<bool>   solved_released(nq, false);
+    // The piece each row had in the last Newton step, and the value of its
+    // relation w - g there: the contact force term that solve balanced.
+    std::vector<ContactPiece> solved = pieces;
+    std::vector<double>       balanced(nq, 0.);
 
     std::vector<double> pbar(nq, 0.), pbar_previous(nq, 0.);
-    double              norm_previous = std::numeric_limits<double>::max();
-    double              eps_previous  = eps_max;
-    double              eps_k         = eps_max;
-    unsigned int        newton_steps  = 0;
-    std::vector<bool>   released_previous(nq, false);
+    double              norm_previous    = std::numeric_limits<double>::max();
+    double              eps_previous     = eps_max;
+    double              eps_k            = eps_max;
+    unsigned int        newton_steps     = 0;
     bool                last_inner_exact = false;
 
     for (unsigned int k = 1;; ++k)
       {
         // pbar with the multipliers and compliances the solve used.
         for (unsigned int i = 0; i < nq; ++i)
-          pbar[i] = unilateral[i] ? std::max(p[i], threshold(i)) : 0.;
+          pbar[i] = law[i]->has_multiplier() ?
+                      law[i]->residual(p[i], mu[i], alpha[i]) :
+                      0.;
         const double norm = norm_of(pbar);
 
         unsigned int changes = 0;
         for (unsigned int i = 0; i < nq; ++i)
           {
-            released[i] = unilateral[i] && (p[i] > threshold(i));
-            changes += (released[i] != released_previous[i]);
+            const ContactPiece current = law[i]->piece(p[i], mu[i], alpha[i]);
+            changes += (current.branch != pieces[i].branch);
+            pieces[i]   = current;
+            released[i] = law[i]->is_free(current.branch);
           }
-        released_previous = released;
 
-        // Step 4: multiplier update (eq. 48); afterwards mu = w_n - g. The
-        // pure penalty keeps mu = 0. The diagonal scheme updates with the
-        // piece its single Newton step solved (pressed rows there: pbar =
-        // mu/alpha), since p of a row held at w_n = g says nothing yet about
-        // how far it opens: updating mu by its tension would guess an opening
-        // that the next step undoes, and the set then cycles (measured on
-        // lift-off).
+        // Step 4: multiplier update (eq. 48), mu <- mu - alpha pbar = dL/dp;
+        // afterwards mu = w_n - g. The pure penalty keeps mu = 0. The
+        // diagonal scheme updates with the piece its single Newton step
+        // solved: a row held there (at w_n = g + offset) takes that offset,
+        // since p of a held row says nothing yet about how far it moves:
+        // updating mu by its reaction would guess a displacement that the
+        // next step undoes, and the set then cycles (measured on lift-off).
         if (!pure_penalty)
           for (unsigned int i = 0; i < nq; ++i)
-            {
-              const double step =
-                (diagonal && unilateral[i] && !solved_released[i]) ?
-                  threshold(i) :
-                  pbar[i];
-              mu[i] -= alpha[i] * step;
-            }
+            if (law[i]->has_multiplier())
+              mu[i] =
+                (diagonal && !solved[i].spring) ?
+                  law[i]->multiplier_on_held_piece(solved[i], mu[i], alpha[i]) :
+                  mu[i] - alpha[i] * pbar[i];
         for (unsigned int i = 0; i < nq; ++i)
-          // w_n - g: pressed rows sit on the obstacle; released rows of the
-          // pure penalty are springs anchored at the gap (mu = 0), so they
-          // open by -alpha p; otherwise the update made mu = w_n - g.
-          opening[i] = !released[i] ? (macaulay || pure_penalty ? 0. : mu[i]) :
-                       pure_penalty ? mu[i] - alpha[i] * p[i] :
-                                      mu[i];
+          // w_n - g: the updated multiplier for a consistent law; released
+          // rows of the pure penalty are springs anchored at the gap (mu =
+          // 0), so they open by -alpha p.
+          opening[i] = pure_penalty ? pieces[i].relation(p[i]) :
+                                      law[i]->opening(pieces[i], p[i], mu[i]);
 
         record(k, newton_steps, eps_k, norm, changes, timer.wall_time(), log);
 
@@ -409,16 +433,24 @@ namespace hrcontact
           }
         if (k >= max_updates)
           break;
-        // Floating: every unilateral row released and none pushing (a
-        // released row of the consistent AL may still carry compression).
-        if (held_only_by_contact &&
-            std::equal(released.begin(), released.end(), unilateral.begin()) &&
-            std::none_of(p.begin(), p.end(), [](double x) { return x < 0; }))
-          {
-            floating        = true;
-            floating_update = k;
-            break;
-          }
+        // Floating: every row with a multiplier on its free branch and none
+        // holding (a released row of the consistent AL may still carry
+        // compression).
+        {
+          bool all_free = true, none_holds = true;
+          for (unsigned int i = 0; i < nq; ++i)
+            {
+              if (law[i]->has_multiplier())
+                all_free &= released[i];
+              none_holds &= !law[i]->holds(p[i]);
+            }
+          if (held_only_by_contact && all_free && none_holds)
+            {
+              floating        = true;
+              floating_update = k;
+              break;
+            }
+        }
         // A released spring far softer than the mesh (alpha much larger than
         // the nodal compliance) leaves the body all but unsupported: the
         // solves lose every digit and ||pbar|| explodes. Stop, do not iterate
@@ -444,22 +476,22 @@ namespace hrcontact
                                inner_tolerance(norm, eps_previous);
 
         // Step 3: Newton steps until the gradient, in contact coordinates
-        // e = [A](mu - alpha p) - balanced, falls by eps_k (the diagonal
-        // scheme: one step). A step that keeps the released set gives e = 0
-        // exactly: the piece is quadratic.
-        newton_steps                             = 0;
-        double                      initial_norm = 0;
-        std::set<std::vector<bool>> solved_sets;
+        // e = (w - g of the piece at p) - balanced, falls by eps_k (the
+        // diagonal scheme: one step). A step that keeps every branch gives
+        // e = 0 exactly: the piece is quadratic.
+        newton_steps                                     = 0;
+        double                              initial_norm = 0;
+        std::set<std::vector<unsigned int>> solved_sets;
         for (;;)
           {
-            std::vector<bool>   active(nq);
-            std::vector<double> e(nq), term(nq, 0.);
+            std::vector<ContactPiece> active(nq);
+            std::vector<unsigned int> branches(nq);
+            std::vector<double>       e(nq);
             for (unsigned int i = 0; i < nq; ++i)
               {
-                active[i] = unilateral[i] && p[i] > threshold(i);
-                if (active[i])
-                  term[i] = mu[i] - alpha[i] * p[i];
-                e[i] = term[i] - balanced[i];
+                active[i]   = law[i]->piece(p[i], mu[i], alpha[i]);
+                branches[i] = active[i].branch;
+                e[i]        = active[i].relation(p[i]) - balanced[i];
               }
             const double e_norm = norm_of(e);
             if (newton_steps == 0)
@@ -470,17 +502,18 @@ namespace hrcontact
                  (diagonal || e_norm <= eps_k * initial_norm)) ||
                 newton_steps >= max_newton_steps)
               break;
-            // A piece depends only on its set (mu, alpha are fixed here):
-            // a set seen before in this inner solve means Newton cycles.
-            if (!solved_sets.insert(active).second)
+            // A piece depends only on its branches (mu, alpha are fixed
+            // here): a set seen before in this inner solve means Newton
+            // cycles.
+            if (!solved_sets.insert(branches).second)
               {
                 cycled = true;
                 break;
               }
-            path.solve(active, mu, alpha, p);
+            path.solve(active, p);
             for (unsigned int i = 0; i < nq; ++i)
-              balanced[i] = active[i] ? mu[i] - alpha[i] * p[i] : 0.;
-            solved_released = active;
+              balanced[i] = active[i].relation(p[i]);
+            solved = active;
             ++newton_steps;
             ++total_newton_steps;
           }

@@ -155,29 +155,56 @@ namespace hrcontact
   }
 
   void
-  NullSpaceStep::solve(const std::vector<bool>   &released,
-                       const std::vector<double> &mu,
-                       const std::vector<double> &alpha,
-                       std::vector<double>       &p)
+  NewtonStepPath::solve(const std::vector<bool>   &released,
+                        const std::vector<double> &mu,
+                        const std::vector<double> &alpha,
+                        std::vector<double>       &p)
+  {
+    std::vector<ContactPiece> pieces(released.size());
+    for (unsigned int i = 0; i < released.size(); ++i)
+      if (released[i])
+        {
+          pieces[i].spring     = true;
+          pieces[i].offset     = mu[i];
+          pieces[i].compliance = alpha[i];
+        }
+    solve(pieces, p);
+  }
+
+  void
+  NullSpaceStep::solve(const std::vector<ContactPiece> &pieces,
+                       std::vector<double>             &p)
   {
     const unsigned int        nq = reduction.n_contact_rows();
     const unsigned int        m  = reduction.n_self_equilibrated();
     const auto               &a  = reduction.contact_offset();
     std::vector<unsigned int> active;
+    std::vector<double>       alpha(nq, 0.);
     for (unsigned int i = 0; i < nq; ++i)
-      if (released[i])
-        active.push_back(i);
+      if (pieces[i].spring)
+        {
+          if (!std::isfinite(pieces[i].compliance))
+            throw InputError(
+              "the null-space path cannot solve a row without stiffness "
+              "(an infinite compliance); take Equilibrium reduction/Path = "
+              "condensed.");
+          active.push_back(i);
+          alpha[i] = pieces[i].compliance;
+        }
 
     // H s0 = r, H = M0 + sum_A alpha_i q_i q_i^T,
-    // r = b0 + sum_A q_i (mu_i - alpha_i a_i).
+    // r = b0 + sum_A q_i (offset_i - alpha_i a_i) + sum_held q_i offset_i:
+    // the row's term of the functional is offset p - alpha/2 p^2 (a held
+    // row: offset p, which moves its w_n from g to g + offset).
     Vector<double> r = reduction.linear_term();
-    for (const unsigned int i : active)
-      {
-        const double  c = mu[i] - alpha[i] * a[i];
-        const double *q = reduction.QR_row(i);
-        for (unsigned int j = 0; j < m; ++j)
-          r[j] += c * q[j];
-      }
+    for (unsigned int i = 0; i < nq; ++i)
+      if (pieces[i].spring || pieces[i].offset != 0)
+        {
+          const double  c = pieces[i].offset - alpha[i] * a[i];
+          const double *q = reduction.QR_row(i);
+          for (unsigned int j = 0; j < m; ++j)
+            r[j] += c * q[j];
+        }
     auto q_dot = [&](const unsigned int i, const Vector<double> &x) {
       const double *q   = reduction.QR_row(i);
       double        sum = 0;
@@ -320,10 +347,8 @@ namespace hrcontact
   }
 
   void
-  CondensedStep::solve(const std::vector<bool>   &released,
-                       const std::vector<double> &mu,
-                       const std::vector<double> &alpha,
-                       std::vector<double>       &p)
+  CondensedStep::solve(const std::vector<ContactPiece> &pieces,
+                       std::vector<double>             &p)
   {
     const unsigned int n_u = system.n_displacement_dofs;
     // Constraints d . u = value for prescribed and pressed rows: the dof
@@ -354,15 +379,15 @@ namespace hrcontact
     for (unsigned int i = 0; i < system.contact_rows.size(); ++i)
       {
         const EquilibriumRow &row = system.rows[system.contact_rows[i]];
-        if (!released[i])
-          constrain(row, row.value);
+        if (!pieces[i].spring)
+          constrain(row, row.value + pieces[i].offset);
         else
           {
-            // Spring 1/alpha along d anchored at g + mu.
-            const double k_s = 1. / alpha[i];
+            // Spring 1/compliance along d anchored at g + offset.
+            const double k_s = 1. / pieces[i].compliance;
             for (const auto &[a, ca] : row.combination)
               {
-                rhs[a] += ca * k_s * (row.value + mu[i]);
+                rhs[a] += ca * k_s * (row.value + pieces[i].offset);
                 for (const auto &[b, cb] : row.combination)
                   A.add(a, b, k_s * ca * cb);
               }

@@ -6,6 +6,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <hrcontact/constraint_law.h>
 #include <hrcontact/equilibrium_system.h>
 #include <hrcontact/input.h>
 #include <hrcontact/newton_step.h>
@@ -113,9 +114,22 @@ namespace hrcontact
     unsigned int max_updates = 100, max_newton_steps = 50;
     double       max_penalty_growth = 1e16;
 
+    /**
+     * The law of a Q row: the row's own law (EquilibriumRow::law), else
+     * unilateral contact regularised as Regularisation says (consistent or
+     * Macaulay) for a unilateral row, else a bilateral constraint.
+     */
+    const ConstraintLaw &
+    law_of(const EquilibriumRow &row) const;
+
     // Results, one entry per Q row (bilateral rows: mu = 0, always pressed).
     std::vector<double> p, mu, alpha;
-    std::vector<bool>   released;
+    /** Whether the row's piece at p is its law's free branch (released). */
+    std::vector<bool> released;
+    /** The law of each row during the last solve. */
+    std::vector<const ConstraintLaw *> law;
+    /** The piece (and branch) of each row at p after the last update. */
+    std::vector<ContactPiece> pieces;
     /**
      * w_n - g per Q row after the last update: mu for the consistent AL
      * (pressed rows have mu = 0), mu or 0 (pressed) for the Macaulay AL, the

@@ -9,12 +9,15 @@
 #include <deal.II/lac/vector.h>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace hrcontact
 {
+  class ConstraintLaw;
+
   /** The three row classes of eq. 38. */
   enum class RowClass
   {
@@ -40,6 +43,12 @@ namespace hrcontact
     /** Q rows only: unilateral contact (w_n - g <= 0, p <= 0) rather than a
      * bilateral constraint w_n = g. */
     bool unilateral = false;
+    /**
+     * Q rows only: a constraint law of its own (a two-sided stop, ...);
+     * null: unilateral contact or a bilateral constraint as `unilateral`
+     * says, regularised as the solver is set up.
+     */
+    std::shared_ptr<const ConstraintLaw> law;
   };
 
   /**

@@ -9,6 +9,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <hrcontact/constraint_law.h>
 #include <hrcontact/equilibrium_reduction.h>
 #include <hrcontact/equilibrium_system.h>
 
@@ -61,10 +62,10 @@ namespace hrcontact
 
   /**
    * One exact Newton step of the augmented Lagrangian (design.md section 4):
-   * the maximiser of the quadratic piece of eq. 44 selected by a released
-   * set. Pressed and bilateral Q rows hold w_n = g; released rows are springs
-   * of compliance alpha_i anchored at g_i + mu_i. The two implementations
-   * give the same iterates in exact arithmetic.
+   * the maximiser of the quadratic piece of eq. 44 that the constraint laws
+   * select, one ContactPiece per Q row: a held row keeps w_n = g + offset, a
+   * spring row w_n - g = offset - compliance p. The two implementations give
+   * the same iterates in exact arithmetic.
    */
   class NewtonStepPath
   {
@@ -73,10 +74,17 @@ namespace hrcontact
 
     /** Solve the piece; return p = Q s - q for every Q row. */
     virtual void
+    solve(const std::vector<ContactPiece> &pieces, std::vector<double> &p) = 0;
+
+    /**
+     * The unilateral shorthand: released rows are springs of compliance
+     * alpha_i anchored at g_i + mu_i, the others are held at w_n = g.
+     */
+    void
     solve(const std::vector<bool>   &released,
           const std::vector<double> &mu,
           const std::vector<double> &alpha,
-          std::vector<double>       &p) = 0;
+          std::vector<double>       &p);
 
     /** Stresses of the last solve. */
     virtual void
@@ -114,11 +122,10 @@ namespace hrcontact
   public:
     explicit NullSpaceStep(const EquilibriumReduction &reduction);
 
+    using NewtonStepPath::solve;
     void
-    solve(const std::vector<bool>   &released,
-          const std::vector<double> &mu,
-          const std::vector<double> &alpha,
-          std::vector<double>       &p) override;
+    solve(const std::vector<ContactPiece> &pieces,
+          std::vector<double>             &p) override;
     void
     stresses(dealii::Vector<double> &s) const override;
     void
@@ -149,11 +156,10 @@ namespace hrcontact
       const LinearSolverSettings &settings = LinearSolverSettings());
     ~CondensedStep() override;
 
+    using NewtonStepPath::solve;
     void
-    solve(const std::vector<bool>   &released,
-          const std::vector<double> &mu,
-          const std::vector<double> &alpha,
-          std::vector<double>       &p) override;
+    solve(const std::vector<ContactPiece> &pieces,
+          std::vector<double>             &p) override;
     void
     stresses(dealii::Vector<double> &s) const override;
     void
