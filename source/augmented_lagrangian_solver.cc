@@ -10,6 +10,7 @@
 #include <iostream>
 #include <limits>
 #include <set>
+#include <tuple>
 
 namespace hrcontact
 {
@@ -323,6 +324,7 @@ namespace hrcontact
     converged          = false;
     diverged           = false;
     cycled             = false;
+    periodic           = false;
     floating           = false;
     roundoff_limited   = false;
     roundoff_floor     = 0;
@@ -381,6 +383,10 @@ namespace hrcontact
     double              eps_k            = eps_max;
     unsigned int        newton_steps     = 0;
     bool                last_inner_exact = false;
+    std::vector<std::tuple<std::vector<unsigned int>,
+                           std::vector<double>,
+                           std::vector<double>>>
+      visited;
 
     for (unsigned int k = 1;; ++k)
       {
@@ -403,17 +409,19 @@ namespace hrcontact
         // Step 4: multiplier update (eq. 48), mu <- mu - alpha pbar = dL/dp;
         // afterwards mu = w_n - g. The pure penalty keeps mu = 0. The
         // diagonal scheme updates with the piece its single Newton step
-        // solved: a row held there (at w_n = g + offset) takes that offset,
+        // solved (ConstraintLaw::multiplier_after_step): a row held there
+        // (at w_n = g + offset) takes that offset,
         // since p of a held row says nothing yet about how far it moves:
         // updating mu by its reaction would guess a displacement that the
         // next step undoes, and the set then cycles (measured on lift-off).
         if (!pure_penalty)
           for (unsigned int i = 0; i < nq; ++i)
             if (law[i]->has_multiplier())
-              mu[i] =
-                (diagonal && !solved[i].spring) ?
-                  law[i]->multiplier_on_held_piece(solved[i], mu[i], alpha[i]) :
-                  mu[i] - alpha[i] * pbar[i];
+              mu[i] = diagonal ? law[i]->multiplier_after_step(solved[i],
+                                                               p[i],
+                                                               mu[i],
+                                                               alpha[i]) :
+                                 mu[i] - alpha[i] * pbar[i];
         for (unsigned int i = 0; i < nq; ++i)
           // w_n - g: the updated multiplier for a consistent law; released
           // rows of the pure penalty are springs anchored at the gap (mu =
@@ -425,14 +433,50 @@ namespace hrcontact
 
         // Step 6: convergence test. The pure penalty is done once the
         // inner solve has reached its exact piece (its own answer, with the
-        // tension of the released springs as its error).
-        if (pure_penalty ? (k > 1 && last_inner_exact) : norm < tolerance_used)
+        // tension of the released springs as its error). The diagonal scheme
+        // also needs the piece at p to be the one its step solved: else p
+        // satisfies another relation, and a small pbar (a stop held at the
+        // estimate mu) says nothing about w.
+        bool same_pieces = true;
+        for (unsigned int i = 0; i < nq; ++i)
+          same_pieces &= (pieces[i].branch == solved[i].branch);
+        if (pure_penalty ?
+              (k > 1 && last_inner_exact) :
+              (norm < tolerance_used && (!diagonal || same_pieces)))
           {
             converged = true;
             break;
           }
         if (k >= max_updates)
           break;
+        // The diagonal scheme is a fixed-point map of (mu, alpha): an update
+        // that reproduces the multipliers, penalties and branches of an
+        // earlier one (to round-off) means it runs in a cycle (measured: a
+        // period of 6 on the bridge stops at alpha_0 = 1e4 c_h).
+        if (diagonal)
+          {
+            std::vector<unsigned int> branches(nq);
+            double                    mu_scale = 0;
+            for (unsigned int i = 0; i < nq; ++i)
+              {
+                branches[i] = pieces[i].branch;
+                mu_scale    = std::max(mu_scale, std::abs(mu[i]));
+              }
+            for (const auto &[b, a, m] : visited)
+              if (b == branches && a == alpha)
+                {
+                  double difference = 0;
+                  for (unsigned int i = 0; i < nq; ++i)
+                    difference = std::max(difference, std::abs(m[i] - mu[i]));
+                  periodic |= (difference <= 1e-12 * mu_scale);
+                }
+            if (periodic)
+              {
+                cycled = true;
+                break;
+              }
+            visited.emplace_back(branches, alpha, mu);
+          }
         // Floating: every row with a multiplier on its free branch and none
         // holding (a released row of the consistent AL may still carry
         // compression).
@@ -489,7 +533,8 @@ namespace hrcontact
             std::vector<double>       e(nq);
             for (unsigned int i = 0; i < nq; ++i)
               {
-                active[i]   = law[i]->piece(p[i], mu[i], alpha[i]);
+                active[i] =
+                  law[i]->next_piece(solved[i], p[i], mu[i], alpha[i]);
                 branches[i] = active[i].branch;
                 e[i]        = active[i].relation(p[i]) - balanced[i];
               }

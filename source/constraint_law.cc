@@ -61,12 +61,22 @@ namespace hrcontact
     return mu - alpha * residual(p, mu, alpha);
   }
 
-  double
-  ConstraintLaw::multiplier_on_held_piece(const ContactPiece &solved,
-                                          const double,
-                                          const double) const
+  ContactPiece
+  ConstraintLaw::next_piece(const ContactPiece &,
+                            const double p,
+                            const double mu,
+                            const double alpha) const
   {
-    return solved.offset;
+    return piece(p, mu, alpha);
+  }
+
+  double
+  ConstraintLaw::multiplier_after_step(const ContactPiece &solved,
+                                       const double        p,
+                                       const double,
+                                       const double) const
+  {
+    return solved.relation(p);
   }
 
   double
@@ -151,12 +161,14 @@ namespace hrcontact
   }
 
   double
-  UnilateralContact::multiplier_on_held_piece(const ContactPiece &,
-                                              const double mu,
-                                              const double alpha) const
+  UnilateralContact::multiplier_after_step(const ContactPiece &solved,
+                                           const double        p,
+                                           const double        mu,
+                                           const double        alpha) const
   {
-    // pbar = mu/alpha on the held piece (written as eq. 48 computes it).
-    return mu - alpha * (mu / alpha);
+    // Eq. 48 as written: a held row takes pbar = mu/alpha, i.e. mu = 0.
+    return solved.spring ? mu - alpha * std::max(p, mu / alpha) :
+                           mu - alpha * (mu / alpha);
   }
 
   std::string
@@ -208,11 +220,13 @@ namespace hrcontact
   }
 
   double
-  MacaulayUnilateralContact::multiplier_on_held_piece(const ContactPiece &,
-                                                      const double mu,
-                                                      const double) const
+  MacaulayUnilateralContact::multiplier_after_step(const ContactPiece &solved,
+                                                   const double        p,
+                                                   const double        mu,
+                                                   const double alpha) const
   {
-    return mu;
+    // A held row keeps its multiplier (pbar = 0 there).
+    return solved.spring ? mu - alpha * std::max(p, 0.) : mu;
   }
 
   double
@@ -280,6 +294,40 @@ namespace hrcontact
   }
 
   ContactPiece
+  TwoSidedStop::piece_of_branch(const unsigned int branch,
+                                const double       mu,
+                                const double       alpha) const
+  {
+    // A vertex q_v of j^c: w = mu - alpha (p - q_v), a spring of compliance
+    // alpha. A quadratic branch j^c = q w0 - c/2 (q - p0)^2 (c = 1/k): the
+    // maximiser is q = (w0 + c p0 - mu + alpha p) / (alpha + c), and
+    // eliminating q gives the spring w = (mu c + alpha w0 + alpha c p0) /
+    // (alpha + c) - alpha c/(alpha + c) p. A linear piece of slope w0: held
+    // at w = w0.
+    auto quadratic = [&](const double w0, const double p0, const double k) {
+      const double c = 1. / k;
+      return spring((mu * c + alpha * w0 + alpha * c * p0) / (alpha + c),
+                    alpha * c / (alpha + c),
+                    branch);
+    };
+    switch (branch)
+      {
+        case beyond_upper:
+          return (k_minus > 0) ? quadratic(g_plus, p0_minus, k_minus) :
+                                 spring(mu + alpha * p0_minus, alpha, branch);
+        case at_upper_stop:
+          return held(g_plus, branch);
+        case at_lower_stop:
+          return held(g_minus, branch);
+        case beyond_lower:
+          return (k_plus > 0) ? quadratic(g_minus, p0_plus, k_plus) :
+                                spring(mu + alpha * p0_plus, alpha, branch);
+        default:
+          return spring(mu, alpha, free);
+      }
+  }
+
+  ContactPiece
   TwoSidedStop::proximal(const double p,
                          const double mu,
                          const double alpha,
@@ -287,47 +335,70 @@ namespace hrcontact
   {
     // Stationarity of the envelope: w(q) := mu - alpha (p - q) lies in the
     // superdifferential of j^c at q. w grows with q, the slope of j^c falls:
-    // walk the pieces from the left.
-    //
-    // A quadratic branch j^c = q w0 - c/2 (q - p0)^2 (c = 1/k): q = (w0 + c
-    // p0 - mu + alpha p) / (alpha + c), and eliminating q gives the spring
-    // w = (mu c + alpha w0 + alpha c p0)/(alpha + c) - alpha c/(alpha + c) p.
-    auto quadratic = [&](const double       w0,
-                         const double       p0,
-                         const double       k,
-                         const unsigned int branch) {
-      const double c = 1. / k;
-      q              = (w0 + c * p0 - mu + alpha * p) / (alpha + c);
-      return spring((mu * c + alpha * w0 + alpha * c * p0) / (alpha + c),
-                    alpha * c / (alpha + c),
-                    branch);
-    };
-    // A vertex q_v: w = mu - alpha (p - q_v).
-    auto vertex = [&](const double q_v, const unsigned int branch) {
-      q = q_v;
-      return spring(mu + alpha * q_v, alpha, branch);
-    };
-
+    // walk the pieces from the left (most compressive reaction).
     const double q_upper = p - (mu - g_plus) / alpha; // on the piece w = g+
     if (q_upper < p0_minus)
-      return (k_minus > 0) ?
-               quadratic(g_plus, p0_minus, k_minus, beyond_upper) :
-               vertex(p0_minus, beyond_upper);
+      {
+        q = (k_minus > 0) ? (g_plus + p0_minus / k_minus - mu + alpha * p) /
+                              (alpha + 1. / k_minus) :
+                            p0_minus;
+        return piece_of_branch(beyond_upper, mu, alpha);
+      }
     if (q_upper <= 0)
       {
         q = q_upper;
-        return held(g_plus, at_upper_stop);
+        return piece_of_branch(at_upper_stop, mu, alpha);
       }
     const double q_lower = p - (mu - g_minus) / alpha; // on the piece w = g-
     if (q_lower < 0)
-      return vertex(0., free);
+      {
+        q = 0;
+        return piece_of_branch(free, mu, alpha);
+      }
     if (q_lower <= p0_plus)
       {
         q = q_lower;
-        return held(g_minus, at_lower_stop);
+        return piece_of_branch(at_lower_stop, mu, alpha);
       }
-    return (k_plus > 0) ? quadratic(g_minus, p0_plus, k_plus, beyond_lower) :
-                          vertex(p0_plus, beyond_lower);
+    q = (k_plus > 0) ? (g_minus + p0_plus / k_plus - mu + alpha * p) /
+                         (alpha + 1. / k_plus) :
+                       p0_plus;
+    return piece_of_branch(beyond_lower, mu, alpha);
+  }
+
+  ContactPiece
+  TwoSidedStop::next_piece(const ContactPiece &from,
+                           const double        p,
+                           const double        mu,
+                           const double        alpha) const
+  {
+    // The branches in the order of the reaction q (most compressive first).
+    static const unsigned int order[5] = {
+      beyond_upper, at_upper_stop, free, at_lower_stop, beyond_lower};
+    auto rank = [](const unsigned int branch) {
+      for (int r = 0; r < 5; ++r)
+        if (order[r] == branch)
+          return r;
+      return 2;
+    };
+    const ContactPiece target = piece(p, mu, alpha);
+    const int          r_from = rank(from.branch), r_to = rank(target.branch);
+    if (std::abs(r_to - r_from) <= 1)
+      return target;
+    return piece_of_branch(order[r_from + (r_to > r_from ? 1 : -1)], mu, alpha);
+  }
+
+  double
+  TwoSidedStop::regularised_potential(const double p,
+                                      const double mu,
+                                      const double alpha) const
+  {
+    // With q from the maximiser itself (p - pbar can round out of the domain
+    // at a vertex).
+    double q = 0;
+    proximal(p, mu, alpha, q);
+    return conjugate_potential(q) + mu * (p - q) -
+           0.5 * alpha * (p - q) * (p - q);
   }
 
   double

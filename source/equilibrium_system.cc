@@ -143,7 +143,9 @@ namespace hrcontact
     for (const unsigned int r : system.prescribed_rows)
       add_row(system.rows[r]);
     for (const unsigned int r : system.contact_rows)
-      if (!system.rows[r].unilateral)
+      // Bilateral rows hold; unilateral contacts and rows with a law of
+      // their own (a stop in free travel) may not.
+      if (!system.rows[r].unilateral && !system.rows[r].law)
         add_row(system.rows[r]);
 
     dealii::Vector<double>     eigenvalues;

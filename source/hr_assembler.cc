@@ -6,6 +6,7 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <hrcontact/constraint_law.h>
 #include <hrcontact/hr_assembler.h>
 
 #include <cmath>
@@ -262,6 +263,8 @@ namespace hrcontact
     std::vector<double>                      gap(n_nodes, 0.);
     std::vector<bool>                        has_normal(n_nodes, false);
     std::vector<bool> normal_is_unilateral(n_nodes, false);
+    // Two-sided stops: the boundary id of the stop at each node.
+    std::vector<int> stop_of_node(n_nodes, -1);
     // Unilateral contact: the obstacle's normal and the gap, per node.
     std::vector<int>            obstacle_of_node(n_nodes, -1);
     std::vector<Tensor<1, dim>> obstacle_normal(n_nodes);
@@ -326,6 +329,21 @@ namespace hrcontact
                 obstacle_normal[node]  = ob->second.normal;
                 gap[node] =
                   (ob->second.point - node_points[node]) * ob->second.normal;
+              }
+
+          if (scene.stops.count(id))
+            for (const auto v : cell->face(f)->vertex_indices())
+              {
+                const unsigned int node =
+                  node_of_vertex[cell->face(f)->vertex_index(v)];
+                if (stop_of_node[node] >= 0 &&
+                    stop_of_node[node] != static_cast<int>(id))
+                  throw InputError(
+                    "Contact/Stops: " + system.describe_node(node) +
+                    " has the stops of boundaries " +
+                    std::to_string(stop_of_node[node]) + " and " +
+                    std::to_string(id) + "; one stop per node.");
+                stop_of_node[node] = id;
               }
 
           // Bilateral normal constraints and unilateral boundary supports
@@ -400,6 +418,48 @@ namespace hrcontact
               add_row(node, e, RowClass::prescribed, prescribed_value[node][d]);
               taken.push_back(e);
             }
+        if (stop_of_node[node] >= 0)
+          {
+            const auto       &stop  = scene.stops.at(stop_of_node[node]);
+            const std::string where = "Contact/Stops, boundary " +
+                                      std::to_string(stop_of_node[node]) +
+                                      ", " + system.describe_node(node);
+            if (has_normal[node] || obstacle_of_node[node] >= 0)
+              throw InputError(where +
+                               ": the node also has a normal constraint, an "
+                               "obstacle or a boundary support.");
+            for (unsigned int d = 0; d < dim; ++d)
+              if (prescribed[node][d] && std::abs(stop.direction[d]) > 1e-12)
+                throw InputError(where +
+                                 ": the stop direction has a part along the "
+                                 "prescribed displacement component " +
+                                 std::string(1, "xyz"[d]) + ".");
+            double values[6] = {0, 0, 0, 0, 0, 0};
+            for (unsigned int k = 0; k < 6; ++k)
+              if (stop.values[k])
+                {
+                  values[k] = stop.values[k]->value(node_points[node]);
+                  if (!std::isfinite(values[k]))
+                    throw InputError(where + ": a value is not finite.");
+                }
+            std::shared_ptr<const ConstraintLaw> law;
+            try
+              {
+                law = std::make_shared<TwoSidedStop>(values[0],
+                                                     values[1],
+                                                     values[2],
+                                                     values[3],
+                                                     values[4],
+                                                     values[5]);
+              }
+            catch (const InputError &e)
+              {
+                throw InputError(where + ": " + e.what());
+              }
+            add_row(node, stop.direction, RowClass::contact, 0.);
+            system.rows.back().law = law;
+            taken.push_back(stop.direction);
+          }
         if (has_normal[node] && obstacle_of_node[node] >= 0)
           throw InputError("Supports: " + system.describe_node(node) +
                            " has both a normal constraint (or boundary "

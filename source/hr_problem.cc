@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <hrcontact/constraint_law.h>
 #include <hrcontact/hr_assembler.h>
 #include <hrcontact/hr_problem.h>
 #include <hrcontact/newton_step.h>
@@ -192,7 +193,7 @@ namespace hrcontact
     }
     has_contact = false;
     for (const unsigned int r : system.contact_rows)
-      has_contact |= system.rows[r].unilateral;
+      has_contact |= system.rows[r].unilateral || system.rows[r].law;
     const unsigned int nq = system.contact_rows.size();
     contact_w.assign(nq, 0.);
     if (has_contact)
@@ -369,6 +370,43 @@ namespace hrcontact
         summary.add("max_positive_p_n", max_p_positive);
         summary.add("max_penetration", max_penetration);
         summary.add("max_complementarity", max_complementarity);
+
+        // Two-sided stops: which node sits on which branch of its law.
+        std::map<unsigned int, std::pair<unsigned int, std::string>> branches;
+        const TwoSidedStop *any = nullptr;
+        for (const unsigned int k : sorted_stop_rows())
+          {
+            const auto *stop = dynamic_cast<const TwoSidedStop *>(
+              system.rows[system.contact_rows[k]].law.get());
+            any = stop;
+            const auto &c =
+              system.node_coordinates[system.rows[system.contact_rows[k]].node];
+            auto &entry = branches[contact_solver.pieces[k].branch];
+            std::ostringstream where;
+            where << std::setprecision(6) << " (" << c[0];
+            for (unsigned int d = 1; d < dim; ++d)
+              where << ", " << c[d];
+            where << ")";
+            ++entry.first;
+            entry.second += where.str();
+          }
+        if (any)
+          {
+            const char *keys[5] = {"stops_free",
+                                   "stops_at_upper_stop",
+                                   "stops_beyond_upper",
+                                   "stops_at_lower_stop",
+                                   "stops_beyond_lower"};
+            for (unsigned int b = 0; b < 5; ++b)
+              {
+                const auto it = branches.find(b);
+                summary.add(keys[b],
+                            it == branches.end() ?
+                              std::string("0") :
+                              std::to_string(it->second.first) + " at" +
+                                it->second.second);
+              }
+          }
       }
     double max_u = 0;
     for (unsigned int i = 0; i < displacement.size(); i += 1)
@@ -424,6 +462,26 @@ namespace hrcontact
     std::vector<unsigned int> order;
     for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
       if (system.rows[system.contact_rows[k]].unilateral)
+        order.push_back(k);
+    auto coordinates = [this](const unsigned int k) {
+      return system.node_coordinates[system.rows[system.contact_rows[k]].node];
+    };
+    std::stable_sort(order.begin(),
+                     order.end(),
+                     [&](unsigned int a, unsigned int b) {
+                       return coordinates(a) < coordinates(b);
+                     });
+    return order;
+  }
+
+  template <int dim>
+  std::vector<unsigned int>
+  HRProblem<dim>::sorted_stop_rows() const
+  {
+    std::vector<unsigned int> order;
+    for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
+      if (dynamic_cast<const TwoSidedStop *>(
+            system.rows[system.contact_rows[k]].law.get()))
         order.push_back(k);
     auto coordinates = [this](const unsigned int k) {
       return system.node_coordinates[system.rows[system.contact_rows[k]].node];
@@ -552,6 +610,43 @@ namespace hrcontact
                 << (contact_solver.released[k] ? "open" : "contact") << "\n";
           }
       });
+    // stops.csv: one row per two-sided stop, sorted by x, y (, z).
+    const std::vector<unsigned int> stop_order = sorted_stop_rows();
+    if (!stop_order.empty())
+      write_file_atomically(
+        output.directory + "/stops.csv", [&](std::ostream &out) {
+          for (unsigned int d = 0; d < dim; ++d)
+            out << xyz[d] << ",";
+          for (unsigned int d = 0; d < dim; ++d)
+            out << "d" << xyz[d] << ",";
+          out << "g_minus,g_plus,p0_minus,p0_plus,k_minus,k_plus,w,";
+          for (unsigned int d = 0; d < dim; ++d)
+            out << "reaction_" << xyz[d] << ",";
+          out << "p,mu,alpha,branch\n";
+          out << std::setprecision(12);
+          for (const unsigned int k : stop_order)
+            {
+              const EquilibriumRow &row = system.rows[system.contact_rows[k]];
+              const auto &stop = dynamic_cast<const TwoSidedStop &>(*row.law);
+              double      w    = 0;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  out << system.node_coordinates[row.node][d] << ",";
+                  w += row.combination[d].second *
+                       displacement[row.combination[d].first];
+                }
+              for (unsigned int d = 0; d < dim; ++d)
+                out << row.combination[d].second << ",";
+              out << stop.g_minus << "," << stop.g_plus << "," << stop.p0_minus
+                  << "," << stop.p0_plus << "," << stop.k_minus << ","
+                  << stop.k_plus << "," << w << ",";
+              for (unsigned int d = 0; d < dim; ++d)
+                out << contact_reactions[k] * row.combination[d].second << ",";
+              out << contact_reactions[k] << "," << contact_solver.mu[k] << ","
+                  << contact_solver.alpha[k] << ","
+                  << stop.branch_name(contact_solver.pieces[k].branch) << "\n";
+            }
+        });
     if (!Utilities::trim(output.tracked_nodes).empty())
       {
         // The nearest contact node of each tracked point.
@@ -671,6 +766,15 @@ namespace hrcontact
              "were written with converged = false.";
         throw NotConvergedError(s.str());
       }
+    if (has_contact && contact_solver.periodic)
+      throw NotConvergedError(
+        "the diagonal scheme cycles: multiplier update " +
+        std::to_string(contact_solver.history.size()) +
+        " reproduced an earlier update (the same branches, penalties and "
+        "multipliers), so the iteration is periodic and would never converge. "
+        "Take Augmented Lagrangian/Iteration scheme = classical, or another "
+        "Initial penalty." +
+        mechanism_hint() + " Results were written with converged = false.");
     if (has_contact && contact_solver.cycled)
       throw NotConvergedError(
         "the inner Newton iteration of multiplier update " +

@@ -175,6 +175,24 @@ namespace hrcontact
         "of the boundary gets w.n - g <= 0 with n the outward normal of the "
         "body at the node (face normals averaged), the same constraint as an "
         "obstacle. Empty: none.");
+      prm.declare_entry(
+        "Stops",
+        "",
+        Patterns::Anything(),
+        "Two-sided stops with limit reactions (section 2.4.2, Fig. 4), e.g. "
+        "the seismic stops of a bridge bearing, per boundary id: 'id: dx, dy "
+        "[, dz] : g- : g+ : p0- : p0+ [: k- : k+]', entries separated by '|'. "
+        "Each node of the boundary gets one constraint on w = u.d (d the "
+        "direction, normalised; constants): free travel for g- < w < g+; at "
+        "w = g+ a reaction p d with p in [p0-, 0] (pushing back), at w = g- "
+        "one with p in [0, p0+] (pulling back); beyond a stop the node moves "
+        "on with the limit reaction, or along a branch of stiffness k- "
+        "(beyond g+) or k+ (beyond g-) when given (0: constant). g-, g+ are "
+        "lengths, p0-, p0+ nodal forces (per unit thickness in 2D), k "
+        "stiffnesses; each an expression in x, y (, z) evaluated at the node. "
+        "Needs g- < g+, p0- <= 0 <= p0+, k >= 0. The direction must not "
+        "have a part along a prescribed displacement component of the node. "
+        "Empty: none.");
     }
     prm.leave_subsection();
   }
@@ -327,6 +345,44 @@ namespace hrcontact
                            " already has a normal constraint or an obstacle.");
         boundary_supports[e.boundary_id] =
           make_function<dim>(e.expressions, 1, constants, where);
+      }
+    for (const BoundaryEntry &e :
+         parse_boundary_list(prm.get("Stops"), dim, false, "Contact/Stops"))
+      {
+        const std::string where =
+          "Contact/Stops, boundary " + std::to_string(e.boundary_id);
+        if (normal_displacements.count(e.boundary_id) ||
+            obstacles.count(e.boundary_id) ||
+            boundary_supports.count(e.boundary_id))
+          throw InputError(where + ": boundary " +
+                           std::to_string(e.boundary_id) +
+                           " already has a normal constraint, an obstacle or "
+                           "a boundary support.");
+        const auto parts = split_and_trim(e.expressions, ':');
+        if (parts.size() != 5 && parts.size() != 7)
+          throw InputError(where +
+                           ": expected 'id: direction : g- : g+ : p0- : p0+' "
+                           "or with ': k- : k+' added, found " +
+                           std::to_string(parts.size()) + " fields.");
+        Stop       stop;
+        const auto coords = split_and_trim(parts[0], ',');
+        if (coords.size() != dim)
+          throw InputError(where + ": expected " + std::to_string(dim) +
+                           " direction components separated by ',' in '" +
+                           parts[0] + "'.");
+        for (unsigned int d = 0; d < dim; ++d)
+          stop.direction[d] =
+            evaluate_constant_expression(coords[d], constants, where);
+        if (!(stop.direction.norm() > 0))
+          throw InputError(where + ": the direction is zero.");
+        stop.direction /= stop.direction.norm();
+        const char *names[6] = {"g-", "g+", "p0-", "p0+", "k-", "k+"};
+        for (unsigned int k = 1; k < parts.size(); ++k)
+          stop.values[k - 1] = make_function<dim>(parts[k],
+                                                  1,
+                                                  constants,
+                                                  where + ", " + names[k - 1]);
+        stops[e.boundary_id] = std::move(stop);
       }
     prm.leave_subsection();
 

@@ -153,6 +153,12 @@ namespace hrcontact
      */
     bool cycled = false;
     /**
+     * Set with cycled when the diagonal scheme, not an inner Newton solve,
+     * came back to the state (branches, alpha, mu) of an earlier
+     * update: the multiplier iteration itself is periodic.
+     */
+    bool periodic = false;
+    /**
      * Set before solve: some rigid-body motion of the body is held by
      * unilateral contacts only (rigid_motions_held_only_by_contact > 0).
      * Then an update that finds every unilateral row released, without

@@ -95,14 +95,29 @@ namespace hrcontact
     gradient(const double p, const double mu, const double alpha) const;
 
     /**
-     * The multiplier after an update whose Newton step solved this row with
-     * the held piece `solved` (the diagonal scheme): the row sat at w - g =
-     * solved.offset, which its reaction says nothing about yet.
+     * The piece of the next Newton step from the piece `from` it solved
+     * last: piece(p) by default. A law with more than two branches crosses
+     * at most one kink of L per row and step (a piecewise line search): with
+     * alpha large the free vertex between two stops is a very soft spring,
+     * and Newton on the held pieces jumps from one stop to the other and back.
+     */
+    virtual ContactPiece
+    next_piece(const ContactPiece &from,
+               const double        p,
+               const double        mu,
+               const double        alpha) const;
+
+    /**
+     * The multiplier after an update in the diagonal scheme, whose single
+     * Newton step solved this row with the piece `solved`: w - g of that
+     * piece at p (a held row sat at its offset, which its reaction says
+     * nothing about yet; a spring moved with p).
      */
     virtual double
-    multiplier_on_held_piece(const ContactPiece &solved,
-                             const double        mu,
-                             const double        alpha) const;
+    multiplier_after_step(const ContactPiece &solved,
+                          const double        p,
+                          const double        mu,
+                          const double        alpha) const;
 
     /**
      * w - g reported after an update, given the piece at p and the updated
@@ -186,9 +201,10 @@ namespace hrcontact
     ContactPiece
     piece(const double p, const double mu, const double alpha) const override;
     double
-    multiplier_on_held_piece(const ContactPiece &solved,
-                             const double        mu,
-                             const double        alpha) const override;
+    multiplier_after_step(const ContactPiece &solved,
+                          const double        p,
+                          const double        mu,
+                          const double        alpha) const override;
     bool
     is_free(const unsigned int branch) const override
     {
@@ -223,9 +239,10 @@ namespace hrcontact
              const double mu,
              const double alpha) const override;
     double
-    multiplier_on_held_piece(const ContactPiece &solved,
-                             const double        mu,
-                             const double        alpha) const override;
+    multiplier_after_step(const ContactPiece &solved,
+                          const double        p,
+                          const double        mu,
+                          const double        alpha) const override;
     double
     opening(const ContactPiece &current,
             const double        p,
@@ -283,6 +300,15 @@ namespace hrcontact
              const double alpha) const override;
     ContactPiece
     piece(const double p, const double mu, const double alpha) const override;
+    double
+    regularised_potential(const double p,
+                          const double mu,
+                          const double alpha) const override;
+    ContactPiece
+    next_piece(const ContactPiece &from,
+               const double        p,
+               const double        mu,
+               const double        alpha) const override;
     bool
     is_free(const unsigned int branch) const override
     {
@@ -303,6 +329,11 @@ namespace hrcontact
     const double g_minus, g_plus, p0_minus, p0_plus, k_minus, k_plus;
 
   private:
+    /** The piece of a branch for the multiplier mu and compliance alpha. */
+    ContactPiece
+    piece_of_branch(const unsigned int branch,
+                    const double       mu,
+                    const double       alpha) const;
     /** The maximiser q* of the envelope and its piece. */
     ContactPiece
     proximal(const double p,

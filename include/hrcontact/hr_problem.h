@@ -111,6 +111,10 @@ namespace hrcontact
     /** Sorted unilateral Q-row indices (by x, then y, then z). */
     std::vector<unsigned int>
     sorted_contact_rows() const;
+    /** Indices of the two-sided stop rows among the Q rows, sorted by node
+     * coordinates. */
+    std::vector<unsigned int>
+    sorted_stop_rows() const;
 
     dealii::TimerOutput timer;
     std::string         parameter_file_name;

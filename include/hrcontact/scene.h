@@ -116,6 +116,18 @@ namespace hrcontact
     std::map<dealii::types::boundary_id,
              std::unique_ptr<dealii::FunctionParser<dim>>>
       boundary_supports;
+
+    /**
+     * Two-sided stops with limit reactions (section 2.4.2) on the nodes of a
+     * boundary id: the direction d of w = u.d and the functions g-, g+, p0-,
+     * p0+ and, optionally, k-, k+ of the node position (null: k = 0).
+     */
+    struct Stop
+    {
+      dealii::Tensor<1, dim>                       direction;
+      std::unique_ptr<dealii::FunctionParser<dim>> values[6];
+    };
+    std::map<dealii::types::boundary_id, Stop> stops;
   };
 } // namespace hrcontact
 
