@@ -91,7 +91,7 @@ namespace hrcontact
     std::vector<double> dir(dim, 0.);
     // The combination holds the node's dofs in component order.
     for (unsigned int k = 0; k < row.combination.size(); ++k)
-      dir[k] = row.combination[k].second;
+      dir[k] = row.direction_component(k);
     for (unsigned int d = 0; d < dim; ++d)
       s << (d ? ", " : "") << std::setprecision(3) << dir[d];
     s << ")";
@@ -126,7 +126,7 @@ namespace hrcontact
       // (0, -z, y), (z, 0, -x).
       std::array<double, 3> d = {{0, 0, 0}};
       for (unsigned int k = 0; k < row.combination.size() && k < dim; ++k)
-        d[k] = row.combination[k].second;
+        d[k] = row.direction_component(k);
       std::vector<double> v(n_modes, 0.);
       for (unsigned int k = 0; k < dim; ++k)
         v[k] = d[k];

@@ -5,13 +5,16 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
 
 #include <hrcontact/constraint_law.h>
 #include <hrcontact/hr_assembler.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 namespace hrcontact
 {
@@ -266,7 +269,10 @@ namespace hrcontact
     // Two-sided stops: the boundary id of the stop at each node.
     std::vector<int> stop_of_node(n_nodes, -1);
     // Unilateral contact: the obstacle's normal and the gap, per node.
-    std::vector<int>            obstacle_of_node(n_nodes, -1);
+    std::vector<int> obstacle_of_node(n_nodes, -1);
+    std::vector<
+      std::vector<std::tuple<types::boundary_id, Tensor<1, dim>, double>>>
+                                all_obstacles(n_nodes);
     std::vector<Tensor<1, dim>> obstacle_normal(n_nodes);
 
     const QGauss<dim - 1> centre(1);
@@ -317,14 +323,16 @@ namespace hrcontact
               {
                 const unsigned int node =
                   node_of_vertex[cell->face(f)->vertex_index(v)];
-                if (obstacle_of_node[node] >= 0 &&
-                    obstacle_of_node[node] != static_cast<int>(id))
-                  throw InputError(
-                    "Contact/Obstacles: " + system.describe_node(node) +
-                    " touches the obstacles of boundaries " +
-                    std::to_string(obstacle_of_node[node]) + " and " +
-                    std::to_string(id) +
-                    "; several obstacles at one node are not supported yet.");
+                // Several obstacles at a node (a corner, eq. 11): one row
+                // per obstacle, set up below.
+                bool known = false;
+                for (const auto &[other, n, g] : all_obstacles[node])
+                  known |= (other == id);
+                if (!known)
+                  all_obstacles[node].emplace_back(
+                    id,
+                    ob->second.normal,
+                    (ob->second.point - node_points[node]) * ob->second.normal);
                 obstacle_of_node[node] = id;
                 obstacle_normal[node]  = ob->second.normal;
                 gap[node] =
@@ -391,14 +399,19 @@ namespace hrcontact
                        const Tensor<1, dim> &direction,
                        const RowClass        row_class,
                        const double          value,
-                       const bool            unilateral = false) {
+                       const bool            unilateral = false,
+                       const Tensor<1, dim> *dual       = nullptr) {
       EquilibriumRow row;
       row.row_class  = row_class;
       row.node       = node;
       row.value      = value;
       row.unilateral = unilateral;
       for (unsigned int d = 0; d < dim; ++d)
-        row.combination.emplace_back(node_dofs[node][d], direction[d]);
+        row.combination.emplace_back(node_dofs[node][d],
+                                     dual ? (*dual)[d] : direction[d]);
+      if (dual)
+        for (unsigned int d = 0; d < dim; ++d)
+          row.direction.push_back(direction[d]);
       const unsigned int r = system.rows.size();
       system.rows.push_back(row);
       (row_class == RowClass::free    ? system.free_rows :
@@ -418,6 +431,72 @@ namespace hrcontact
               add_row(node, e, RowClass::prescribed, prescribed_value[node][d]);
               taken.push_back(e);
             }
+        if (all_obstacles[node].size() > 1)
+          {
+            // A corner between obstacles (eq. 11): the normals n_i and free
+            // directions t completing them form the node's primal basis,
+            // rows w_i = n_i . u; the force rows are its dual basis, so that
+            // the nodal reaction is sum_i p_i n_i with every p_i <= 0.
+            const std::string where =
+              "Contact/Obstacles: " + system.describe_node(node);
+            if (has_normal[node] || stop_of_node[node] >= 0 ||
+                std::any_of(prescribed[node].begin(),
+                            prescribed[node].end(),
+                            [](bool b) { return b; }))
+              throw InputError(where +
+                               " touches several obstacles and also has a "
+                               "prescribed component, a normal constraint or "
+                               "a stop; a corner node takes obstacles only.");
+            if (all_obstacles[node].size() > dim)
+              throw InputError(where + " touches " +
+                               std::to_string(all_obstacles[node].size()) +
+                               " obstacles; at most " + std::to_string(dim) +
+                               " can meet at a node.");
+            std::vector<Tensor<1, dim>> basis, orthonormal;
+            for (const auto &[id, n, g] : all_obstacles[node])
+              {
+                basis.push_back(n);
+                Tensor<1, dim> e = n;
+                for (const auto &o : orthonormal)
+                  e -= (e * o) * o;
+                if (e.norm() < 1e-6)
+                  throw InputError(where + " touches obstacles with linearly "
+                                           "dependent normals.");
+                orthonormal.push_back(e / e.norm());
+              }
+            for (unsigned int d = 0; d < dim && basis.size() < dim; ++d)
+              {
+                Tensor<1, dim> t;
+                t[d] = 1.;
+                for (const auto &o : orthonormal)
+                  t -= (t * o) * o;
+                if (t.norm() < 0.5)
+                  continue;
+                t /= t.norm();
+                basis.push_back(t);
+                orthonormal.push_back(t);
+              }
+            // Dual basis: the rows of (P^T)^{-1}... i.e. c_r . d_s = delta.
+            FullMatrix<double> P(dim, dim), Pinv(dim, dim);
+            for (unsigned int r = 0; r < dim; ++r)
+              for (unsigned int d = 0; d < dim; ++d)
+                P(r, d) = basis[r][d];
+            Pinv.invert(P);
+            for (unsigned int r = 0; r < dim; ++r)
+              {
+                Tensor<1, dim> dual;
+                for (unsigned int d = 0; d < dim; ++d)
+                  dual[d] = Pinv(d, r);
+                const bool is_obstacle = r < all_obstacles[node].size();
+                add_row(node,
+                        basis[r],
+                        is_obstacle ? RowClass::contact : RowClass::free,
+                        is_obstacle ? std::get<2>(all_obstacles[node][r]) : 0.,
+                        is_obstacle,
+                        &dual);
+              }
+            continue;
+          }
         if (stop_of_node[node] >= 0)
           {
             const auto       &stop  = scene.stops.at(stop_of_node[node]);

@@ -316,18 +316,19 @@ namespace hrcontact
     // problem (zero net load) is judged against its reactions.
     std::vector<double> load(dim, 0.), reaction(dim, 0.);
     double              scale = 0;
-    // The rows of a node are an orthonormal basis: sum_r (f.c_r) c_r = f.
+    // The directions d_r of a node are the primal basis to the dual basis
+    // c_r of the rows: sum_r (f.c_r) d_r = f.
     for (const auto &row : system.rows)
       {
         const double f_r = system.row_load(row);
         scale            = std::max(scale, std::abs(f_r));
         for (unsigned int d = 0; d < dim; ++d)
-          load[d] += f_r * row.combination[d].second;
+          load[d] += f_r * row.direction_component(d);
       }
     auto add_reaction = [&](const unsigned int r, const double value) {
       scale = std::max(scale, std::abs(value));
       for (unsigned int d = 0; d < dim; ++d)
-        reaction[d] += value * system.rows[r].combination[d].second;
+        reaction[d] += value * system.rows[r].direction_component(d);
     };
     for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
       add_reaction(system.contact_rows[k], contact_reactions[k]);
@@ -598,13 +599,13 @@ namespace hrcontact
             for (unsigned int d = 0; d < dim; ++d)
               out << system.node_coordinates[row.node][d] << ",";
             for (unsigned int d = 0; d < dim; ++d)
-              out << row.combination[d].second << ",";
+              out << row.direction_component(d) << ",";
             out << row.value << ",";
             for (unsigned int d = 0; d < dim; ++d)
               out << displacement[row.combination[d].first] << ",";
             out << contact_w[k] << ",";
             for (unsigned int d = 0; d < dim; ++d)
-              out << contact_reactions[k] * row.combination[d].second << ",";
+              out << contact_reactions[k] * row.direction_component(d) << ",";
             out << contact_reactions[k] << "," << contact_solver.mu[k] << ","
                 << contact_solver.alpha[k] << ","
                 << (contact_solver.released[k] ? "open" : "contact") << "\n";

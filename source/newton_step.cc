@@ -12,6 +12,7 @@
 #include <hrcontact/newton_step.h>
 
 #include <cmath>
+#include <map>
 
 #include <Epetra_MultiVector.h>
 
@@ -357,21 +358,83 @@ namespace hrcontact
     auto constrain = [&](const EquilibriumRow &row, const double value) {
       unsigned int k_max = 0;
       for (unsigned int k = 1; k < row.combination.size(); ++k)
-        if (std::abs(row.combination[k].second) >
-            std::abs(row.combination[k_max].second))
+        if (std::abs(row.direction_component(k)) >
+            std::abs(row.direction_component(k_max)))
           k_max = k;
       const auto   dof = row.combination[k_max].first;
-      const double d   = row.combination[k_max].second;
+      const double d   = row.direction_component(k_max);
       constraints.add_line(dof);
       for (unsigned int k = 0; k < row.combination.size(); ++k)
-        if (k != k_max && row.combination[k].second != 0)
+        if (k != k_max && row.direction_component(k) != 0)
           constraints.add_entry(dof,
                                 row.combination[k].first,
-                                -row.combination[k].second / d);
+                                -row.direction_component(k) / d);
       constraints.set_inhomogeneity(dof, value / d);
     };
+    // Several held rows at one node (a node in a corner between obstacles,
+    // eq. 11): d_r . u = value_r jointly, by Gauss-Jordan elimination with
+    // the largest pivot of each row, so that every constrained dof is
+    // expressed by the free ones only.
+    auto constrain_jointly =
+      [&](const std::vector<std::pair<const EquilibriumRow *, double>> &rows) {
+        const auto        &dofs = rows.front().first->combination;
+        const unsigned int m = rows.size(), n = dofs.size();
+        FullMatrix<double> D(m, n);
+        Vector<double>     b(m);
+        for (unsigned int r = 0; r < m; ++r)
+          {
+            for (unsigned int k = 0; k < n; ++k)
+              D(r, k) = rows[r].first->direction_component(k);
+            b[r] = rows[r].second;
+          }
+        std::vector<unsigned int> pivot(m);
+        std::vector<bool>         is_pivot(n, false);
+        for (unsigned int r = 0; r < m; ++r)
+          {
+            unsigned int c = n;
+            for (unsigned int k = 0; k < n; ++k)
+              if (!is_pivot[k] &&
+                  (c == n || std::abs(D(r, k)) > std::abs(D(r, c))))
+                c = k;
+            if (c == n || std::abs(D(r, c)) < 1e-10)
+              throw InputError(
+                "the constraints held at " +
+                system.describe_node(rows[r].first->node) +
+                " are linearly dependent (obstacles with parallel normals?).");
+            pivot[r]           = c;
+            is_pivot[c]        = true;
+            const double scale = D(r, c);
+            for (unsigned int k = 0; k < n; ++k)
+              D(r, k) /= scale;
+            b[r] /= scale;
+            for (unsigned int s = 0; s < m; ++s)
+              if (s != r && D(s, c) != 0)
+                {
+                  const double factor = D(s, c);
+                  for (unsigned int k = 0; k < n; ++k)
+                    D(s, k) -= factor * D(r, k);
+                  b[s] -= factor * b[r];
+                }
+          }
+        for (unsigned int r = 0; r < m; ++r)
+          {
+            constraints.add_line(dofs[pivot[r]].first);
+            for (unsigned int k = 0; k < n; ++k)
+              if (!is_pivot[k] && D(r, k) != 0)
+                constraints.add_entry(dofs[pivot[r]].first,
+                                      dofs[k].first,
+                                      -D(r, k));
+            constraints.set_inhomogeneity(dofs[pivot[r]].first, b[r]);
+          }
+      };
+    // Held rows per node: the prescribed ones and the held Q rows.
+    std::map<unsigned int,
+             std::vector<std::pair<const EquilibriumRow *, double>>>
+                                         held;
+    std::map<unsigned int, unsigned int> held_q_rows;
     for (const unsigned int r : system.prescribed_rows)
-      constrain(system.rows[r], system.rows[r].value);
+      held[system.rows[r].node].emplace_back(&system.rows[r],
+                                             system.rows[r].value);
 
     SparseMatrix<double> A(sparsity);
     A.copy_from(K);
@@ -380,19 +443,32 @@ namespace hrcontact
       {
         const EquilibriumRow &row = system.rows[system.contact_rows[i]];
         if (!pieces[i].spring)
-          constrain(row, row.value + pieces[i].offset);
+          {
+            held[row.node].emplace_back(&row, row.value + pieces[i].offset);
+            ++held_q_rows[row.node];
+          }
         else
           {
             // Spring 1/compliance along d anchored at g + offset.
             const double k_s = 1. / pieces[i].compliance;
-            for (const auto &[a, ca] : row.combination)
+            for (unsigned int ka = 0; ka < row.combination.size(); ++ka)
               {
-                rhs[a] += ca * k_s * (row.value + pieces[i].offset);
-                for (const auto &[b, cb] : row.combination)
-                  A.add(a, b, k_s * ca * cb);
+                const auto   a  = row.combination[ka].first;
+                const double da = row.direction_component(ka);
+                rhs[a] += da * k_s * (row.value + pieces[i].offset);
+                for (unsigned int kb = 0; kb < row.combination.size(); ++kb)
+                  A.add(a,
+                        row.combination[kb].first,
+                        k_s * da * row.direction_component(kb));
               }
           }
       }
+    for (const auto &[node, rows] : held)
+      if (held_q_rows[node] > 1)
+        constrain_jointly(rows);
+      else
+        for (const auto &[row, value] : rows)
+          constrain(*row, value);
     constraints.close();
     constraints.condense(A, rhs);
 
@@ -571,10 +647,10 @@ namespace hrcontact
     w.resize(system.contact_rows.size());
     for (unsigned int i = 0; i < w.size(); ++i)
       {
-        w[i] = 0;
-        for (const auto &[a, ca] :
-             system.rows[system.contact_rows[i]].combination)
-          w[i] += ca * u[a];
+        const EquilibriumRow &row = system.rows[system.contact_rows[i]];
+        w[i]                      = 0;
+        for (unsigned int k = 0; k < row.combination.size(); ++k)
+          w[i] += row.direction_component(k) * u[row.combination[k].first];
       }
   }
 

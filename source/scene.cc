@@ -45,7 +45,12 @@ namespace hrcontact
         "crown radius centred at the origin, invert radius centred on x = 0, "
         "clear height, crown and invert thickness, coarse cells across the "
         "thickness (default 1); ids 0 intrados, 1 extrados, 2 symmetry cut "
-        "at the crown, 3 symmetry cut at the invert; see doc/tunnel.md). For "
+        "at the crown, 3 symmetry cut at the invert; see doc/tunnel.md); "
+        "wedge_block (a parallelogram with one corner at the origin, edges "
+        "(L_a, 0) and L_b (cos theta, sin theta); arguments L_a : L_b : theta "
+        "(degrees) : n_a : n_b cells along them; ids 0 the face along the "
+        "second edge, 1 its opposite, 2 the face along the first edge, 3 its "
+        "opposite). For "
         "deal.II grids the boundary "
         "ids are those the generator assigns (use colorize = true for a rectangle: 0 left, "
         "1 right, 2 bottom, 3 top, in 3D 4 back, 5 front).");
@@ -494,6 +499,41 @@ namespace hrcontact
             throw InputError("Geometry: cannot read the half_cylinder "
                              "arguments '" +
                              grid_arguments + "' as 'R : phi_c : q'.");
+          }
+      }
+    else if (grid_generator == "wedge_block")
+      {
+        // deal.II's subdivided_parallelepiped (not reachable by name):
+        // edges a = (L_a, 0) and b = L_b (cos theta, sin theta) from the
+        // origin, n_a x n_b cells, colorized: 0 the face along b, 1 its
+        // opposite, 2 the face along a, 3 its opposite.
+        const auto parts = split_and_trim(grid_arguments, ':');
+        if (dim != 2 || parts.size() != 5)
+          throw InputError("Geometry: wedge_block is 2D and takes 'L_a : L_b "
+                           ": theta (degrees) : n_a : n_b'.");
+        double v[5];
+        for (unsigned int k = 0; k < 5; ++k)
+          v[k] = evaluate_constant_expression(parts[k],
+                                              constants,
+                                              "Geometry/Grid arguments");
+        if (!(v[0] > 0 && v[1] > 0 && v[2] > 0 && v[2] < 180 && v[3] >= 1 &&
+              v[4] >= 1))
+          throw InputError("Geometry: wedge_block needs L_a, L_b > 0, 0 < "
+                           "theta < 180 and at least one cell per edge.");
+        if constexpr (dim == 2)
+          {
+            const double theta = v[2] * numbers::PI / 180.;
+            Point<dim>   corners[dim];
+            corners[0][0]                  = v[0];
+            corners[1][0]                  = v[1] * std::cos(theta);
+            corners[1][1]                  = v[1] * std::sin(theta);
+            unsigned int subdivisions[dim] = {static_cast<unsigned int>(v[3]),
+                                              static_cast<unsigned int>(v[4])};
+            GridGenerator::subdivided_parallelepiped<dim>(triangulation,
+                                                          subdivisions,
+                                                          corners,
+                                                          true);
+            triangulation.refine_global(global_refinements);
           }
       }
     else

@@ -27,16 +27,30 @@ namespace hrcontact
   };
 
   /**
-   * One row of the rotated equilibrium system: a unit combination of the
-   * dim displacement rows of one node (the identity for unrotated nodes, the
+   * One row of the rotated equilibrium system: a combination of the dim
+   * displacement rows of one node (the identity for unrotated nodes, the
    * normal or a tangent for nodes with a normal constraint). The rows of a
-   * node form an orthonormal basis, so nodal displacements are recovered as
-   * sum_r value_r * combination_r.
+   * node form a basis (orthonormal unless several obstacles meet there), and
+   * nodal displacements are recovered as sum_r w_r * combination_r.
    */
   struct EquilibriumRow
   {
     RowClass                                                        row_class;
     std::vector<std::pair<dealii::types::global_dof_index, double>> combination;
+    /**
+     * The kinematic direction d of the row, w = d . u (entries in the order
+     * of `combination`). The directions of a node form its primal basis and
+     * the combinations the dual one (c_r . d_s = delta_rs): p_r = c_r . (B s
+     * - f) and the nodal reaction is sum_r p_r d_r, the conic combination of
+     * eq. 11 when several obstacles meet at a node. Empty: d = c (an
+     * orthonormal basis, every node but those).
+     */
+    std::vector<double> direction;
+    double
+    direction_component(const unsigned int k) const
+    {
+      return direction.empty() ? combination[k].second : direction[k];
+    }
     /** Prescribed value: u-hat for H rows, the gap g for Q rows. */
     double       value = 0;
     unsigned int node  = 0;
