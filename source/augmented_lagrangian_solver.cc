@@ -383,6 +383,7 @@ namespace hrcontact
     double              eps_k            = eps_max;
     unsigned int        newton_steps     = 0;
     bool                last_inner_exact = false;
+    bool                geometry_changed = false;
     std::vector<std::tuple<std::vector<unsigned int>,
                            std::vector<double>,
                            std::vector<double>>>
@@ -440,9 +441,9 @@ namespace hrcontact
         bool same_pieces = true;
         for (unsigned int i = 0; i < nq; ++i)
           same_pieces &= (pieces[i].branch == solved[i].branch);
-        if (pure_penalty ?
-              (k > 1 && last_inner_exact) :
-              (norm < tolerance_used && (!diagonal || same_pieces)))
+        if (pure_penalty ? (k > 1 && last_inner_exact) :
+                           (norm < tolerance_used &&
+                            (!diagonal || same_pieces) && !geometry_changed))
           {
             converged = true;
             break;
@@ -516,8 +517,9 @@ namespace hrcontact
         norm_previous = norm;
         pbar_previous = pbar;
 
-        eps_k = pure_penalty ? 0. : // solve the piece exactly
+        eps_k            = pure_penalty ? 0. : // solve the piece exactly
                                inner_tolerance(norm, eps_previous);
+        geometry_changed = after_update && after_update();
 
         // Step 3: Newton steps until the gradient, in contact coordinates
         // e = (w - g of the piece at p) - balanced, falls by eps_k (the
@@ -542,7 +544,9 @@ namespace hrcontact
             if (newton_steps == 0)
               initial_norm = e_norm;
             last_inner_exact = (e_norm == 0);
-            if (e_norm == 0 ||
+            // New rows (re-linearised obstacles) make the last solve stale.
+            const bool stale = geometry_changed && newton_steps == 0;
+            if ((e_norm == 0 && !stale) ||
                 (newton_steps > 0 &&
                  (diagonal || e_norm <= eps_k * initial_norm)) ||
                 newton_steps >= max_newton_steps)

@@ -317,26 +317,42 @@ namespace hrcontact
                   }
               }
 
+          // A node touching an obstacle: one constraint per obstacle (several
+          // at a corner, eq. 11, set up below).
+          auto touch = [&](const unsigned int    node,
+                           const Tensor<1, dim> &normal,
+                           const double          node_gap) {
+            bool known = false;
+            for (const auto &[other, n, g] : all_obstacles[node])
+              known |= (other == id);
+            if (!known)
+              all_obstacles[node].emplace_back(id, normal, node_gap);
+            obstacle_of_node[node] = id;
+            obstacle_normal[node]  = normal;
+            gap[node]              = node_gap;
+          };
           const auto ob = scene.obstacles.find(id);
           if (ob != scene.obstacles.end())
             for (const auto v : cell->face(f)->vertex_indices())
               {
                 const unsigned int node =
                   node_of_vertex[cell->face(f)->vertex_index(v)];
-                // Several obstacles at a node (a corner, eq. 11): one row
-                // per obstacle, set up below.
-                bool known = false;
-                for (const auto &[other, n, g] : all_obstacles[node])
-                  known |= (other == id);
-                if (!known)
-                  all_obstacles[node].emplace_back(
-                    id,
-                    ob->second.normal,
-                    (ob->second.point - node_points[node]) * ob->second.normal);
-                obstacle_of_node[node] = id;
-                obstacle_normal[node]  = ob->second.normal;
-                gap[node] =
-                  (ob->second.point - node_points[node]) * ob->second.normal;
+                touch(node,
+                      ob->second.normal,
+                      (ob->second.point - node_points[node]) *
+                        ob->second.normal);
+              }
+          // A curved obstacle: the straight one tangent at the nearest point
+          // of its surface (the paper's linearised case).
+          const auto co = scene.curved_obstacles.find(id);
+          if (co != scene.curved_obstacles.end())
+            for (const auto v : cell->face(f)->vertex_indices())
+              {
+                const unsigned int node =
+                  node_of_vertex[cell->face(f)->vertex_index(v)];
+                const auto [surface, normal] =
+                  co->second.project(node_points[node]);
+                touch(node, normal, (surface - node_points[node]) * normal);
               }
 
           if (scene.stops.count(id))
@@ -494,6 +510,9 @@ namespace hrcontact
                         is_obstacle ? std::get<2>(all_obstacles[node][r]) : 0.,
                         is_obstacle,
                         &dual);
+                if (is_obstacle)
+                  system.rows.back().obstacle =
+                    std::get<0>(all_obstacles[node][r]);
               }
             continue;
           }
@@ -581,6 +600,8 @@ namespace hrcontact
                         RowClass::contact,
                         g / length,
                         unilateral);
+                if (obstacle_of_node[node] >= 0)
+                  system.rows.back().obstacle = obstacle_of_node[node];
                 taken.push_back(n_free / length);
               }
           }

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <limits>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -169,7 +170,14 @@ namespace hrcontact
           "Lagrangian needs Equilibrium reduction/Path = condensed (or "
           "automatic): the null-space path cannot leave a contact node free of "
           "both a spring and a support.");
-      if (displacement_al)
+      const bool relinearise =
+        scene.update_curved_obstacles && !scene.curved_obstacles.empty();
+      if (relinearise && solution_path == "null-space")
+        throw InputError(
+          "Contact/Update curved obstacles = true needs Equilibrium "
+          "reduction/Path = condensed (or automatic): the null-space "
+          "reduction is built once from the initial constraint directions.");
+      if (displacement_al || relinearise)
         solution_path = "condensed";
       if (solution_path == "automatic")
         solution_path = (dense_bytes <= reduction.automatic_dense_limit) ?
@@ -217,7 +225,12 @@ namespace hrcontact
         contact_solver.set_nodal_compliance(c_h);
         free_rigid_motions = rigid_motions_held_only_by_contact(system);
         contact_solver.held_only_by_contact = (free_rigid_motions > 0);
+        if (scene.update_curved_obstacles && !scene.curved_obstacles.empty())
+          contact_solver.after_update = [this, &path]() {
+            return relinearise_curved_obstacles(*path);
+          };
         contact_solver.solve(system, *path, load_scale, log);
+        contact_solver.after_update = nullptr;
         // After the last multiplier update mu = w_n - g (pressed: mu = 0).
         for (unsigned int k = 0; k < nq; ++k)
           contact_w[k] = system.rows[system.contact_rows[k]].value +
@@ -473,6 +486,95 @@ namespace hrcontact
                        return coordinates(a) < coordinates(b);
                      });
     return order;
+  }
+
+  template <int dim>
+  bool
+  HRProblem<dim>::relinearise_curved_obstacles(const NewtonStepPath &path)
+  {
+    // The tangent obstacle at the point of the surface nearest to the
+    // current position X + u of each node (the straight case of eq. 10 at
+    // the current configuration): new normal n, gap g = (x_surface - X).n,
+    // with the prescribed components of the node taken out as the assembler
+    // does; the node's free rows complete the basis again.
+    Vector<double> u;
+    path.displacements(contact_w, u);
+    const double                                      u_max   = u.linfty_norm();
+    bool                                              changed = false;
+    std::map<unsigned int, std::vector<unsigned int>> rows_of_node;
+    for (unsigned int r = 0; r < system.rows.size(); ++r)
+      rows_of_node[system.rows[r].node].push_back(r);
+    for (const unsigned int r : system.contact_rows)
+      {
+        EquilibriumRow &row = system.rows[r];
+        const auto      co  = scene.curved_obstacles.find(row.obstacle);
+        // Corner nodes (several obstacles) stay linearised at the start.
+        if (row.obstacle < 0 || co == scene.curved_obstacles.end() ||
+            !row.direction.empty())
+          continue;
+        Point<dim> X, x;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            X[d] = system.node_coordinates[row.node][d];
+            x[d] = X[d] + u[row.combination[d].first];
+          }
+        const auto [surface, n]            = co->second.project(x);
+        Tensor<1, dim>              n_free = n;
+        double                      g      = (surface - X) * n;
+        std::vector<Tensor<1, dim>> taken;
+        for (const unsigned int s : rows_of_node[row.node])
+          if (system.rows[s].row_class == RowClass::prescribed)
+            for (unsigned int d = 0; d < dim; ++d)
+              if (system.rows[s].combination[d].second == 1.)
+                {
+                  g -= n[d] * system.rows[s].value;
+                  n_free[d] = 0;
+                  Tensor<1, dim> e;
+                  e[d] = 1;
+                  taken.push_back(e);
+                }
+        const double length = n_free.norm();
+        if (length < 1e-8)
+          continue;
+        n_free /= length;
+        g /= length;
+        // Changed: beyond 1e-8 of the displacements (the finite-difference
+        // gradient of a level set is good to about that).
+        double turn = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          turn += std::abs(n_free[d] - row.combination[d].second);
+        if (std::abs(g - row.value) + turn * u_max >
+            1e-8 * (u_max + std::abs(g)))
+          changed = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          row.combination[d].second = n_free[d];
+        row.value = g;
+        taken.push_back(n_free);
+        // The free rows: the orthogonal complement, in axis order.
+        std::vector<Tensor<1, dim>> complement;
+        for (unsigned int d = 0; d < dim && taken.size() < dim; ++d)
+          {
+            Tensor<1, dim> t;
+            t[d] = 1.;
+            for (const auto &e : taken)
+              t -= (t * e) * e;
+            if (t.norm() < 0.5)
+              continue;
+            t /= t.norm();
+            taken.push_back(t);
+            complement.push_back(t);
+          }
+        unsigned int next = 0;
+        for (const unsigned int s : rows_of_node[row.node])
+          if (system.rows[s].row_class == RowClass::free &&
+              next < complement.size())
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                system.rows[s].combination[d].second = complement[next][d];
+              ++next;
+            }
+      }
+    return changed;
   }
 
   template <int dim>

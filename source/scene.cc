@@ -181,6 +181,29 @@ namespace hrcontact
         "body at the node (face normals averaged), the same constraint as an "
         "obstacle. Empty: none.");
       prm.declare_entry(
+        "Curved obstacles",
+        "",
+        Patterns::Anything(),
+        "Rigid curved obstacles for frictionless unilateral contact, per "
+        "boundary id of the body, entries separated by '|': 'id: circle : xc, "
+        "yc [, zc] : R' (a circle in 2D, in 3D a cylinder with its axis along "
+        "z through (xc, yc)), 'id: sphere : xc, yc, zc : R', or 'id: level "
+        "set : phi' with phi an expression in x, y (, z) that is negative "
+        "inside the obstacle (best a signed distance). Each node of the "
+        "boundary gets the constraint of the straight obstacle tangent at its "
+        "nearest point on the surface (the paper's linearised case): normal "
+        "n = -grad phi / |grad phi| there, pointing into the obstacle, and "
+        "gap g = (x_surface - x).n.");
+      prm.declare_entry(
+        "Update curved obstacles",
+        "false",
+        Patterns::Bool(),
+        "false: linearise the curved obstacles once, at the initial "
+        "configuration. true: linearise them again at the current "
+        "configuration x + u after every multiplier update (nearest point, "
+        "normal and gap; needs the condensed path). For small displacements "
+        "the difference is of second order in u / R.");
+      prm.declare_entry(
         "Stops",
         "",
         Patterns::Anything(),
@@ -351,6 +374,58 @@ namespace hrcontact
         boundary_supports[e.boundary_id] =
           make_function<dim>(e.expressions, 1, constants, where);
       }
+    for (const BoundaryEntry &e : parse_boundary_list(
+           prm.get("Curved obstacles"), dim, false, "Contact/Curved obstacles"))
+      {
+        const std::string where =
+          "Contact/Curved obstacles, boundary " + std::to_string(e.boundary_id);
+        if (normal_displacements.count(e.boundary_id) ||
+            obstacles.count(e.boundary_id) ||
+            boundary_supports.count(e.boundary_id))
+          throw InputError(where + ": boundary " +
+                           std::to_string(e.boundary_id) +
+                           " already has a normal constraint, an obstacle or "
+                           "a boundary support.");
+        const auto     parts = split_and_trim(e.expressions, ':');
+        CurvedObstacle obstacle;
+        if (!parts.empty() && parts[0] == "level set" && parts.size() == 2)
+          {
+            obstacle.shape = CurvedObstacle::Shape::level_set;
+            obstacle.phi =
+              make_function<dim>(parts[1], 1, constants, where + ", phi");
+          }
+        else if (!parts.empty() &&
+                 (parts[0] == "circle" || parts[0] == "sphere") &&
+                 parts.size() == 3)
+          {
+            obstacle.shape = (parts[0] == "circle") ?
+                               CurvedObstacle::Shape::circle :
+                               CurvedObstacle::Shape::sphere;
+            if (obstacle.shape == CurvedObstacle::Shape::sphere && dim != 3)
+              throw InputError(where + ": a sphere needs Dimension = 3 (use "
+                                       "circle in 2D).");
+            const auto         coords = split_and_trim(parts[1], ',');
+            const unsigned int n_centre =
+              (obstacle.shape == CurvedObstacle::Shape::circle) ? 2 : 3;
+            if (coords.size() != n_centre)
+              throw InputError(where + ": expected " +
+                               std::to_string(n_centre) +
+                               " centre coordinates in '" + parts[1] + "'.");
+            for (unsigned int d = 0; d < n_centre; ++d)
+              obstacle.centre[d] =
+                evaluate_constant_expression(coords[d], constants, where);
+            obstacle.radius =
+              evaluate_constant_expression(parts[2], constants, where);
+            if (!(obstacle.radius > 0))
+              throw InputError(where + ": the radius must be positive.");
+          }
+        else
+          throw InputError(
+            where + ": expected 'id: circle : xc, yc [, zc] : R', 'id: "
+                    "sphere : xc, yc, zc : R' or 'id: level set : phi'.");
+        curved_obstacles[e.boundary_id] = std::move(obstacle);
+      }
+    update_curved_obstacles = prm.get_bool("Update curved obstacles");
     for (const BoundaryEntry &e :
          parse_boundary_list(prm.get("Stops"), dim, false, "Contact/Stops"))
       {
@@ -629,6 +704,40 @@ namespace hrcontact
     if (dim == 3)
       return "3D";
     return plane_strain ? "plane strain" : "plane stress";
+  }
+
+  template <int dim>
+  std::pair<Point<dim>, Tensor<1, dim>>
+  Scene<dim>::CurvedObstacle::project(const Point<dim> &x) const
+  {
+    if (shape != Shape::level_set)
+      {
+        // Circle (cylinder along z in 3D) or sphere.
+        Tensor<1, dim> r = x - centre;
+        if (shape == Shape::circle && dim == 3)
+          r[dim - 1] = 0;
+        const double length = r.norm();
+        if (!(length > 1e-14 * radius))
+          throw InputError("Contact/Curved obstacles: a node lies on the "
+                           "centre (axis) of a circular obstacle, where the "
+                           "nearest point is not defined.");
+        return {x - r + radius * r / length, -r / length};
+      }
+    Point<dim> y = x;
+    for (unsigned int it = 0; it < 50; ++it)
+      {
+        const double         value    = phi->value(y);
+        const Tensor<1, dim> gradient = phi->gradient(y);
+        const double         g2       = gradient.norm_square();
+        if (!std::isfinite(value) || !(g2 > 0))
+          throw InputError("Contact/Curved obstacles: the level set or its "
+                           "gradient is not usable near a contact node.");
+        y -= value / g2 * gradient;
+        if (std::abs(value) <= 1e-13 * (1 + x.norm()))
+          break;
+      }
+    const Tensor<1, dim> gradient = phi->gradient(y);
+    return {y, -gradient / gradient.norm()};
   }
 
   template class Scene<2>;

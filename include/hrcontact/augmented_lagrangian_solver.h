@@ -11,6 +11,7 @@
 #include <hrcontact/input.h>
 #include <hrcontact/newton_step.h>
 
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -121,6 +122,15 @@ namespace hrcontact
      */
     const ConstraintLaw &
     law_of(const EquilibriumRow &row) const;
+
+    /**
+     * Called after every multiplier update that did not converge, before
+     * the next Newton steps (curved obstacles re-linearised at the current
+     * configuration). Returns whether it changed the rows: the next update
+     * then solves at least once, and convergence waits for a call that
+     * changed nothing.
+     */
+    std::function<bool()> after_update;
 
     // Results, one entry per Q row (bilateral rows: mu = 0, always pressed).
     std::vector<double> p, mu, alpha;

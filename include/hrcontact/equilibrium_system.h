@@ -57,6 +57,8 @@ namespace hrcontact
     /** Q rows only: unilateral contact (w_n - g <= 0, p <= 0) rather than a
      * bilateral constraint w_n = g. */
     bool unilateral = false;
+    /** Q rows of obstacles: the boundary id whose obstacle it is, else -1. */
+    int obstacle = -1;
     /**
      * Q rows only: a constraint law of its own (a two-sided stop, ...);
      * null: unilateral contact or a bilateral constraint as `unilateral`

@@ -115,6 +115,13 @@ namespace hrcontact
      * coordinates. */
     std::vector<unsigned int>
     sorted_stop_rows() const;
+    /**
+     * Contact/Update curved obstacles: re-linearise the curved obstacles at
+     * the current configuration of the path's last solve; whether a row
+     * changed.
+     */
+    bool
+    relinearise_curved_obstacles(const NewtonStepPath &path);
 
     dealii::TimerOutput timer;
     std::string         parameter_file_name;

@@ -128,6 +128,43 @@ namespace hrcontact
       std::unique_ptr<dealii::FunctionParser<dim>> values[6];
     };
     std::map<dealii::types::boundary_id, Stop> stops;
+
+    /**
+     * Rigid curved obstacles on the nodes of a boundary id: a circle (a
+     * cylinder in 3D: its axis along z) or sphere of centre c and radius R,
+     * or the region phi < 0 of a level-set expression. The body stays in
+     * phi >= 0.
+     */
+    struct CurvedObstacle
+    {
+      enum class Shape
+      {
+        circle,
+        sphere,
+        level_set
+      };
+      Shape                                        shape = Shape::circle;
+      dealii::Point<dim>                           centre;
+      double                                       radius = 0;
+      std::unique_ptr<dealii::FunctionParser<dim>> phi;
+
+      /**
+       * The point of the obstacle's surface nearest to x (exact for a
+       * circle or sphere; for a level set, the iteration x <- x - phi
+       * grad phi / |grad phi|^2, which ends on the surface and is the
+       * nearest point when phi is a distance), and the unit normal there
+       * pointing into the obstacle (-grad phi / |grad phi|).
+       */
+      std::pair<dealii::Point<dim>, dealii::Tensor<1, dim>>
+      project(const dealii::Point<dim> &x) const;
+    };
+    std::map<dealii::types::boundary_id, CurvedObstacle> curved_obstacles;
+    /**
+     * Re-linearise the curved obstacles at the current configuration after
+     * every multiplier update (condensed path), rather than once at the
+     * initial one.
+     */
+    bool update_curved_obstacles = false;
   };
 } // namespace hrcontact
 
