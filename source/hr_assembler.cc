@@ -480,18 +480,8 @@ namespace hrcontact
                                            "dependent normals.");
                 orthonormal.push_back(e / e.norm());
               }
-            for (unsigned int d = 0; d < dim && basis.size() < dim; ++d)
-              {
-                Tensor<1, dim> t;
-                t[d] = 1.;
-                for (const auto &o : orthonormal)
-                  t -= (t * o) * o;
-                if (t.norm() < 0.5)
-                  continue;
-                t /= t.norm();
-                basis.push_back(t);
-                orthonormal.push_back(t);
-              }
+            for (const auto &t : orthogonal_complement<dim>(orthonormal))
+              basis.push_back(t);
             // Dual basis: the rows of (P^T)^{-1}... i.e. c_r . d_s = delta.
             FullMatrix<double> P(dim, dim), Pinv(dim, dim);
             for (unsigned int r = 0; r < dim; ++r)
@@ -605,17 +595,9 @@ namespace hrcontact
                 taken.push_back(n_free / length);
               }
           }
-        // The free rows span the orthogonal complement of what is taken
-        // (Gram-Schmidt on the axes, in axis order).
-        for (unsigned int d = 0; d < dim && taken.size() < dim; ++d)
+        // The free rows span the orthogonal complement of what is taken.
+        for (const auto &t : orthogonal_complement<dim>(taken))
           {
-            Tensor<1, dim> t;
-            t[d] = 1.;
-            for (const auto &e : taken)
-              t -= (t * e) * e;
-            if (t.norm() < 0.5)
-              continue;
-            t /= t.norm();
             add_row(node, t, RowClass::free, 0.);
             taken.push_back(t);
           }
@@ -624,6 +606,31 @@ namespace hrcontact
     AssertThrow(system.rows.size() == system.n_displacement_dofs,
                 ExcInternalError());
   }
+
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  orthogonal_complement(const std::vector<Tensor<1, dim>> &taken)
+  {
+    std::vector<Tensor<1, dim>> all = taken, complement;
+    for (unsigned int d = 0; d < dim && all.size() < dim; ++d)
+      {
+        Tensor<1, dim> t;
+        t[d] = 1.;
+        for (const auto &e : all)
+          t -= (t * e) * e;
+        if (t.norm() < 0.5)
+          continue;
+        t /= t.norm();
+        all.push_back(t);
+        complement.push_back(t);
+      }
+    return complement;
+  }
+
+  template std::vector<Tensor<1, 2>>
+  orthogonal_complement<2>(const std::vector<Tensor<1, 2>> &);
+  template std::vector<Tensor<1, 3>>
+  orthogonal_complement<3>(const std::vector<Tensor<1, 3>> &);
 
   template class HRAssembler<2>;
   template class HRAssembler<3>;

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -471,11 +472,12 @@ namespace hrcontact
 
   template <int dim>
   std::vector<unsigned int>
-  HRProblem<dim>::sorted_contact_rows() const
+  HRProblem<dim>::sorted_q_rows(
+    const std::function<bool(const EquilibriumRow &)> &select) const
   {
     std::vector<unsigned int> order;
     for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
-      if (system.rows[system.contact_rows[k]].unilateral)
+      if (select(system.rows[system.contact_rows[k]]))
         order.push_back(k);
     auto coordinates = [this](const unsigned int k) {
       return system.node_coordinates[system.rows[system.contact_rows[k]].node];
@@ -486,6 +488,14 @@ namespace hrcontact
                        return coordinates(a) < coordinates(b);
                      });
     return order;
+  }
+
+  template <int dim>
+  std::vector<unsigned int>
+  HRProblem<dim>::sorted_contact_rows() const
+  {
+    return sorted_q_rows(
+      [](const EquilibriumRow &row) { return row.unilateral; });
   }
 
   template <int dim>
@@ -550,21 +560,9 @@ namespace hrcontact
           row.combination[d].second = n_free[d];
         row.value = g;
         taken.push_back(n_free);
-        // The free rows: the orthogonal complement, in axis order.
-        std::vector<Tensor<1, dim>> complement;
-        for (unsigned int d = 0; d < dim && taken.size() < dim; ++d)
-          {
-            Tensor<1, dim> t;
-            t[d] = 1.;
-            for (const auto &e : taken)
-              t -= (t * e) * e;
-            if (t.norm() < 0.5)
-              continue;
-            t /= t.norm();
-            taken.push_back(t);
-            complement.push_back(t);
-          }
-        unsigned int next = 0;
+        // The free rows: the orthogonal complement, as the assembler has it.
+        const auto   complement = orthogonal_complement<dim>(taken);
+        unsigned int next       = 0;
         for (const unsigned int s : rows_of_node[row.node])
           if (system.rows[s].row_class == RowClass::free &&
               next < complement.size())
@@ -581,20 +579,9 @@ namespace hrcontact
   std::vector<unsigned int>
   HRProblem<dim>::sorted_stop_rows() const
   {
-    std::vector<unsigned int> order;
-    for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
-      if (dynamic_cast<const TwoSidedStop *>(
-            system.rows[system.contact_rows[k]].law.get()))
-        order.push_back(k);
-    auto coordinates = [this](const unsigned int k) {
-      return system.node_coordinates[system.rows[system.contact_rows[k]].node];
-    };
-    std::stable_sort(order.begin(),
-                     order.end(),
-                     [&](unsigned int a, unsigned int b) {
-                       return coordinates(a) < coordinates(b);
-                     });
-    return order;
+    return sorted_q_rows([](const EquilibriumRow &row) {
+      return dynamic_cast<const TwoSidedStop *>(row.law.get()) != nullptr;
+    });
   }
 
   template <int dim>

@@ -31,6 +31,14 @@ namespace hrcontact
     const Scene<dim>       &scene;
     const MixedSpaces<dim> &spaces;
   };
+  /**
+   * The free directions of a node: Gram-Schmidt remainders of the unit axes
+   * (in axis order) against the orthonormal directions `taken`, until they
+   * span the space.
+   */
+  template <int dim>
+  std::vector<dealii::Tensor<1, dim>>
+  orthogonal_complement(const std::vector<dealii::Tensor<1, dim>> &taken);
 } // namespace hrcontact
 
 #endif

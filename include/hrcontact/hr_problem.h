@@ -14,6 +14,7 @@
 #include <hrcontact/postprocessor.h>
 #include <hrcontact/scene.h>
 
+#include <functional>
 #include <ostream>
 #include <string>
 
@@ -108,6 +109,10 @@ namespace hrcontact
      */
     void
     lining_output(std::ostream &log);
+    /** Indices of the selected Q rows, sorted by x, then y, then z. */
+    std::vector<unsigned int>
+    sorted_q_rows(
+      const std::function<bool(const EquilibriumRow &)> &select) const;
     /** Sorted unilateral Q-row indices (by x, then y, then z). */
     std::vector<unsigned int>
     sorted_contact_rows() const;
