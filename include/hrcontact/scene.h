@@ -164,7 +164,7 @@ namespace hrcontact
      * every multiplier update (condensed path), rather than once at the
      * initial one.
      */
-    bool update_curved_obstacles = false;
+    bool update_curved_obstacles = true;
   };
 } // namespace hrcontact
 
