@@ -376,18 +376,22 @@ namespace hrcontact
         boundary_supports[e.boundary_id] =
           make_function<dim>(e.expressions, 1, constants, where);
       }
+    // A boundary takes one kind of normal constraint.
+    auto require_unconstrained = [this](const types::boundary_id id,
+                                        const std::string       &where) {
+      if (normal_displacements.count(id) || obstacles.count(id) ||
+          boundary_supports.count(id) || curved_obstacles.count(id) ||
+          stops.count(id))
+        throw InputError(where + ": boundary " + std::to_string(id) +
+                         " already has a normal constraint, an obstacle, a "
+                         "boundary support or a stop.");
+    };
     for (const BoundaryEntry &e : parse_boundary_list(
            prm.get("Curved obstacles"), dim, false, "Contact/Curved obstacles"))
       {
         const std::string where =
           "Contact/Curved obstacles, boundary " + std::to_string(e.boundary_id);
-        if (normal_displacements.count(e.boundary_id) ||
-            obstacles.count(e.boundary_id) ||
-            boundary_supports.count(e.boundary_id))
-          throw InputError(where + ": boundary " +
-                           std::to_string(e.boundary_id) +
-                           " already has a normal constraint, an obstacle or "
-                           "a boundary support.");
+        require_unconstrained(e.boundary_id, where);
         const auto     parts = split_and_trim(e.expressions, ':');
         CurvedObstacle obstacle;
         if (!parts.empty() && parts[0] == "level set" && parts.size() == 2)
@@ -433,13 +437,7 @@ namespace hrcontact
       {
         const std::string where =
           "Contact/Stops, boundary " + std::to_string(e.boundary_id);
-        if (normal_displacements.count(e.boundary_id) ||
-            obstacles.count(e.boundary_id) ||
-            boundary_supports.count(e.boundary_id))
-          throw InputError(where + ": boundary " +
-                           std::to_string(e.boundary_id) +
-                           " already has a normal constraint, an obstacle or "
-                           "a boundary support.");
+        require_unconstrained(e.boundary_id, where);
         const auto parts = split_and_trim(e.expressions, ':');
         if (parts.size() != 5 && parts.size() != 7)
           throw InputError(where +
