@@ -117,8 +117,9 @@ namespace hrcontact
   }
 
   template <int dim>
-  HRProblem<dim>::HRProblem(ParameterHandler &prm)
-    : timer(std::cout, TimerOutput::never, TimerOutput::wall_times)
+  HRProblem<dim>::HRProblem(ParameterHandler &prm, const MPI_Comm communicator)
+    : mpi_communicator(communicator)
+    , timer(std::cout, TimerOutput::never, TimerOutput::wall_times)
   {
     scene.parse_parameters(prm);
     spaces.parse_parameters(prm);
@@ -137,6 +138,9 @@ namespace hrcontact
       TimerOutput::Scope t(timer, "mesh and dofs");
       scene.create_mesh(triangulation);
       spaces.setup(triangulation);
+      partition = partition_with_p4est(triangulation,
+                                       spaces.dof_handler_displacement,
+                                       mpi_communicator);
     }
     log << "  "
         << (dim == 2 ? "2D (" + scene.plane_condition_name() + ")" : "3D")
@@ -146,6 +150,8 @@ namespace hrcontact
         << "  dofs: " << spaces.dof_handler_displacement.n_dofs()
         << " displacement, " << spaces.dof_handler_stress.n_dofs() << " stress"
         << std::endl;
+    if (partition.distributed())
+      log << "  parallel: " << partition.describe() << std::endl;
 
     {
       TimerOutput::Scope t(timer, "assembly");
@@ -198,7 +204,8 @@ namespace hrcontact
           path = std::make_unique<NullSpaceStep>(reduction);
         }
       else
-        path = std::make_unique<CondensedStep>(system, linear_solver);
+        path =
+          std::make_unique<CondensedStep>(system, linear_solver, &partition);
     }
     has_contact = false;
     for (const unsigned int r : system.contact_rows)
@@ -439,12 +446,10 @@ namespace hrcontact
     postprocessor.evaluate(spaces, scene, displacement, stress, summary, log);
 
     std::filesystem::create_directories(output.directory);
+    std::string solution_file;
     if (output.write_vtu)
-      postprocessor.write_vtu(spaces,
-                              scene,
-                              displacement,
-                              stress,
-                              output.directory + "/solution.vtu");
+      solution_file = postprocessor.write_solution(
+        spaces, scene, displacement, stress, partition, output.directory);
     summary.add(
       "wall_time",
       timer.get_summary_data(TimerOutput::total_wall_time).empty() ?
@@ -465,9 +470,10 @@ namespace hrcontact
           contact_pressure_summary(log);
         write_contact_tables();
       }
-    summary.write(output.directory + "/summary.txt");
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      summary.write(output.directory + "/summary.txt");
     log << "  results in " << output.directory << "/ (summary.txt"
-        << (output.write_vtu ? ", solution.vtu" : "") << ")" << std::endl;
+        << (output.write_vtu ? ", " + solution_file : "") << ")" << std::endl;
   }
 
   template <int dim>
@@ -669,7 +675,9 @@ namespace hrcontact
     const std::vector<unsigned int> order = sorted_contact_rows();
     const char                     *xyz   = "xyz";
     write_file_atomically(
-      output.directory + "/contact.csv", [&](std::ostream &out) {
+      mpi_communicator,
+      output.directory + "/contact.csv",
+      [&](std::ostream &out) {
         for (unsigned int d = 0; d < dim; ++d)
           out << xyz[d] << ",";
         for (unsigned int d = 0; d < dim; ++d)
@@ -704,7 +712,9 @@ namespace hrcontact
     const std::vector<unsigned int> stop_order = sorted_stop_rows();
     if (!stop_order.empty())
       write_file_atomically(
-        output.directory + "/stops.csv", [&](std::ostream &out) {
+        mpi_communicator,
+        output.directory + "/stops.csv",
+        [&](std::ostream &out) {
           for (unsigned int d = 0; d < dim; ++d)
             out << xyz[d] << ",";
           for (unsigned int d = 0; d < dim; ++d)
@@ -774,7 +784,9 @@ namespace hrcontact
             tracked.push_back(nearest);
           }
         write_file_atomically(
-          output.directory + "/contact-history.csv", [&](std::ostream &out) {
+          mpi_communicator,
+          output.directory + "/contact-history.csv",
+          [&](std::ostream &out) {
             out << "k,node,x,y" << (dim == 3 ? ",z" : "")
                 << ",w_n,p_n,alpha,status\n"
                 << std::setprecision(12);
@@ -797,7 +809,9 @@ namespace hrcontact
           });
       }
     write_file_atomically(
-      output.directory + "/history.csv", [&](std::ostream &out) {
+      mpi_communicator,
+      output.directory + "/history.csv",
+      [&](std::ostream &out) {
         out
           << "k,newton_steps,alpha_min,alpha_max,eps_k,norm_pbar,active_changes,"
              "seconds\n";

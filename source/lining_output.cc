@@ -26,7 +26,9 @@ namespace hrcontact
                                  displacement,
                                  lining.sections(output.lining_sections));
         write_file_atomically(
-          output.directory + "/lining.csv", [&](std::ostream &out) {
+          mpi_communicator,
+          output.directory + "/lining.csv",
+          [&](std::ostream &out) {
             out << "s,part,x,y,nx,ny,thickness,N,V,M,sigma_inner,sigma_outer,"
                    "ux,uy,u_n\n"
                 << std::setprecision(10);
@@ -180,7 +182,9 @@ namespace hrcontact
             << peak << " at s = " << peak_s << std::endl;
 
         write_file_atomically(
-          output.directory + "/lining-contact.csv", [&](std::ostream &out) {
+          mpi_communicator,
+          output.directory + "/lining-contact.csv",
+          [&](std::ostream &out) {
             out << "s,x,y,nx,ny,ux,uy,w_n,gap,p_n,pressure,status\n"
                 << std::setprecision(10);
             for (unsigned int j = 0; j < nc; ++j)

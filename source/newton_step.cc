@@ -5,8 +5,12 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_index_access.h>
 #include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <hrcontact/input.h>
 #include <hrcontact/newton_step.h>
@@ -113,12 +117,13 @@ namespace hrcontact
                                                                    "cg-amg";
   }
 
-  /** The Trilinos side of the CG + AMG solver. */
-  struct CondensedStep::AMG
+  /** The Trilinos back end of the condensed path. */
+  struct CondensedStep::Distributed
   {
-    /** The matrix the hierarchy was built from (ML keeps a pointer). */
+    TrilinosWrappers::SparseMatrix matrix;
+    TrilinosWrappers::MPI::Vector  rhs, u;
+    /** The matrix the AMG hierarchy was built from (ML keeps a pointer). */
     TrilinosWrappers::SparseMatrix      setup_matrix;
-    TrilinosWrappers::SparseMatrix      matrix;
     TrilinosWrappers::PreconditionAMG   preconditioner;
     std::unique_ptr<Epetra_MultiVector> modes;
     bool                                built                  = false;
@@ -126,6 +131,8 @@ namespace hrcontact
     /** Rigid-body modes per dof: component and node coordinates. */
     std::vector<unsigned int>          component;
     std::vector<std::array<double, 3>> point;
+    /** K_c of the cells this process owns (empty for the others). */
+    std::vector<FullMatrix<double>> cell_stiffness;
   };
 
   // ------------------------------------------------------------------------
@@ -294,40 +301,78 @@ namespace hrcontact
   // ------------------------------------------------------------------------
   // Condensed path
 
+  namespace
+  {
+    const std::string singular_stiffness_message =
+      "Condensed path: the stiffness B F^-1 B^T with the current supports is "
+      "singular: the body has a zero-energy mode (a mechanism, an unsupported "
+      "body, or a stress space too poor for the mesh). The null-space path "
+      "(Equilibrium reduction/Path = null-space) names the nodes the mode "
+      "moves.";
+  }
+
   CondensedStep::~CondensedStep() = default;
 
   CondensedStep::CondensedStep(const EquilibriumSystem    &system,
-                               const LinearSolverSettings &settings)
+                               const LinearSolverSettings &settings,
+                               const DofPartition         *given_partition)
     : system(system)
     , settings(settings)
+    , partition(given_partition ?
+                  *given_partition :
+                  serial_partition(system.n_displacement_dofs,
+                                   system.cell_stress_dofs.size()))
   {
-    const unsigned int n_u = system.n_displacement_dofs;
-    solver                 = settings.choose(n_u, system.dim);
-    statistics.solver      = solver;
-    if (solver == "cg-amg")
+    const unsigned int n_u     = system.n_displacement_dofs;
+    const unsigned int n_cells = system.cell_stress_dofs.size();
+    solver                     = settings.choose(n_u, system.dim);
+    statistics.solver          = solver;
+    if (solver == "cg-amg" || partition.distributed())
       {
-        amg = std::make_unique<AMG>();
-        amg->component.assign(n_u, 0);
-        amg->point.assign(n_u, {{0., 0., 0.}});
+        distributed = std::make_unique<Distributed>();
+        distributed->component.assign(n_u, 0);
+        distributed->point.assign(n_u, {{0., 0., 0.}});
         for (const auto &row : system.rows)
           for (unsigned int k = 0; k < row.combination.size(); ++k)
             {
-              amg->component[row.combination[k].first] = k;
-              amg->point[row.combination[k].first] =
+              distributed->component[row.combination[k].first] = k;
+              distributed->point[row.combination[k].first] =
                 system.node_coordinates[row.node];
             }
+        distributed->cell_stiffness.resize(n_cells);
+        // The step-40 idiom: the couplings of the owned cells, sent to the
+        // owners of their rows.
+        DynamicSparsityPattern dsp(partition.relevant);
+        for (unsigned int c = 0; c < n_cells; ++c)
+          if (partition.owned_cell[c])
+            for (const auto i : system.cell_displacement_dofs[c])
+              for (const auto j : system.cell_displacement_dofs[c])
+                dsp.add(i, j);
+        SparsityTools::distribute_sparsity_pattern(dsp,
+                                                   partition.owned,
+                                                   partition.communicator,
+                                                   partition.relevant);
+        distributed->matrix.reinit(partition.owned,
+                                   partition.owned,
+                                   dsp,
+                                   partition.communicator);
+        distributed->rhs.reinit(partition.owned, partition.communicator);
+        distributed->u.reinit(partition.owned, partition.communicator);
       }
-    DynamicSparsityPattern dsp(n_u, n_u);
-    for (const auto &dofs : system.cell_displacement_dofs)
-      for (const auto i : dofs)
-        for (const auto j : dofs)
-          dsp.add(i, j);
-    sparsity.copy_from(dsp);
-    K.reinit(sparsity);
+    else
+      {
+        DynamicSparsityPattern dsp(n_u, n_u);
+        for (const auto &dofs : system.cell_displacement_dofs)
+          for (const auto i : dofs)
+            for (const auto j : dofs)
+              dsp.add(i, j);
+        sparsity.copy_from(dsp);
+        K.reinit(sparsity);
+      }
 
     // K_c = B_c F_c^{-1} B_c^T, and F_c^{-1} B_c^T kept for the stresses.
-    recovery.resize(system.cell_stress_dofs.size());
-    for (unsigned int c = 0; c < system.cell_stress_dofs.size(); ++c)
+    recovery.resize(n_cells);
+    for (unsigned int c = 0; c < n_cells; ++c)
       {
         const auto        &du = system.cell_displacement_dofs[c];
         const auto        &ds = system.cell_stress_dofs[c];
@@ -339,11 +384,16 @@ namespace hrcontact
         Finv.invert(system.cell_flexibility[c]);
         recovery[c].reinit(ds.size(), du.size());
         Finv.mTmult(recovery[c], Bc); // F^{-1} B^T
+        if (distributed && !partition.owned_cell[c])
+          continue;
         FullMatrix<double> Kc(du.size(), du.size());
         Bc.mmult(Kc, recovery[c]);
-        for (unsigned int i = 0; i < du.size(); ++i)
-          for (unsigned int j = 0; j < du.size(); ++j)
-            K.add(du[i], du[j], Kc(i, j));
+        if (distributed)
+          distributed->cell_stiffness[c] = std::move(Kc);
+        else
+          for (unsigned int i = 0; i < du.size(); ++i)
+            for (unsigned int j = 0; j < du.size(); ++j)
+              K.add(du[i], du[j], Kc(i, j));
       }
   }
 
@@ -353,8 +403,9 @@ namespace hrcontact
   {
     const unsigned int n_u = system.n_displacement_dofs;
     // Constraints d . u = value for prescribed and pressed rows: the dof
-    // with the largest |d_k| is expressed by the others of its node.
-    AffineConstraints<double> constraints;
+    // with the largest |d_k| is expressed by the others of its node. Every
+    // process knows those of its relevant dofs (owned and ghost).
+    AffineConstraints<double> constraints(partition.relevant);
     auto constrain = [&](const EquilibriumRow &row, const double value) {
       unsigned int k_max = 0;
       for (unsigned int k = 1; k < row.combination.size(); ++k)
@@ -427,41 +478,34 @@ namespace hrcontact
             constraints.set_inhomogeneity(dofs[pivot[r]].first, b[r]);
           }
       };
-    // Held rows per node: the prescribed ones and the held Q rows.
+    // The dofs of a node all belong to the same process.
+    auto relevant = [&](const EquilibriumRow &row) {
+      return partition.relevant.is_element(row.combination.front().first);
+    };
+    auto owned = [&](const EquilibriumRow &row) {
+      return partition.owned.is_element(row.combination.front().first);
+    };
+    // Held rows per node: the prescribed ones and the held Q rows; springs.
     std::map<unsigned int,
              std::vector<std::pair<const EquilibriumRow *, double>>>
                                          held;
     std::map<unsigned int, unsigned int> held_q_rows;
+    std::vector<std::pair<const EquilibriumRow *, const ContactPiece *>>
+      springs;
     for (const unsigned int r : system.prescribed_rows)
-      held[system.rows[r].node].emplace_back(&system.rows[r],
-                                             system.rows[r].value);
-
-    SparseMatrix<double> A(sparsity);
-    A.copy_from(K);
-    Vector<double> rhs = system.load;
+      if (relevant(system.rows[r]))
+        held[system.rows[r].node].emplace_back(&system.rows[r],
+                                               system.rows[r].value);
     for (unsigned int i = 0; i < system.contact_rows.size(); ++i)
       {
         const EquilibriumRow &row = system.rows[system.contact_rows[i]];
-        if (!pieces[i].spring)
+        if (!pieces[i].spring && relevant(row))
           {
             held[row.node].emplace_back(&row, row.value + pieces[i].offset);
             ++held_q_rows[row.node];
           }
-        else
-          {
-            // Spring 1/compliance along d anchored at g + offset.
-            const double k_s = 1. / pieces[i].compliance;
-            for (unsigned int ka = 0; ka < row.combination.size(); ++ka)
-              {
-                const auto   a  = row.combination[ka].first;
-                const double da = row.direction_component(ka);
-                rhs[a] += da * k_s * (row.value + pieces[i].offset);
-                for (unsigned int kb = 0; kb < row.combination.size(); ++kb)
-                  A.add(a,
-                        row.combination[kb].first,
-                        k_s * da * row.direction_component(kb));
-              }
-          }
+        else if (pieces[i].spring && owned(row))
+          springs.emplace_back(&row, &pieces[i]);
       }
     for (const auto &[node, rows] : held)
       if (held_q_rows[node] > 1)
@@ -470,18 +514,106 @@ namespace hrcontact
         for (const auto &[row, value] : rows)
           constrain(*row, value);
     constraints.close();
-    constraints.condense(A, rhs);
+
+    // A spring 1/compliance along d anchored at g + offset: the node matrix
+    // k d d^T and the force k (g + offset) d.
+    auto spring = [](const EquilibriumRow &row,
+                     const ContactPiece   &piece,
+                     FullMatrix<double>   &matrix,
+                     Vector<double>       &force) {
+      const unsigned int n   = row.combination.size();
+      const double       k_s = 1. / piece.compliance;
+      matrix.reinit(n, n);
+      force.reinit(n);
+      for (unsigned int a = 0; a < n; ++a)
+        {
+          force[a] =
+            row.direction_component(a) * k_s * (row.value + piece.offset);
+          for (unsigned int b = 0; b < n; ++b)
+            matrix(a, b) =
+              k_s * row.direction_component(a) * row.direction_component(b);
+        }
+    };
+    FullMatrix<double>                   spring_matrix;
+    Vector<double>                       spring_force;
+    std::vector<types::global_dof_index> node_dofs;
 
     ++statistics.solves;
-    if (solver == "cg-amg")
+    if (distributed)
       {
-        if (!settings.warm_start || u.size() != n_u)
-          u.reinit(n_u);
-        solve_cg_amg(A, rhs);
-        constraints.distribute(u);
+        Timer timer;
+        auto &A   = distributed->matrix;
+        auto &rhs = distributed->rhs;
+        A         = 0;
+        rhs       = 0;
+        for (unsigned int c = 0; c < recovery.size(); ++c)
+          if (partition.owned_cell[c])
+            {
+              const auto &du = system.cell_displacement_dofs[c];
+              constraints.distribute_local_to_global(
+                distributed->cell_stiffness[c],
+                Vector<double>(du.size()),
+                du,
+                A,
+                rhs);
+            }
+        for (const auto &[row, piece] : springs)
+          {
+            spring(*row, *piece, spring_matrix, spring_force);
+            node_dofs.clear();
+            for (const auto &[dof, c] : row->combination)
+              node_dofs.push_back(dof);
+            constraints.distribute_local_to_global(
+              spring_matrix, spring_force, node_dofs, A, rhs);
+          }
+        Vector<double>                       one_load(1);
+        std::vector<types::global_dof_index> one_dof(1);
+        for (const auto i : partition.owned)
+          if (system.load[i] != 0)
+            {
+              one_load[0] = system.load[i];
+              one_dof[0]  = i;
+              constraints.distribute_local_to_global(one_load, one_dof, rhs);
+            }
+        A.compress(VectorOperation::add);
+        rhs.compress(VectorOperation::add);
+        statistics.setup_seconds += timer.wall_time();
+
+        if (!settings.warm_start)
+          distributed->u = 0;
+        if (solver == "cg-amg")
+          solve_cg_amg();
+        else
+          solve_direct_distributed();
+        constraints.distribute(distributed->u);
+        u.reinit(n_u);
+        for (const auto i : partition.owned)
+          u[i] = distributed->u[i];
+        if (partition.distributed())
+          {
+            const ArrayView<const double> values(u.begin(), u.size());
+            const ArrayView<double>       sums(u.begin(), u.size());
+            Utilities::MPI::sum(values, partition.communicator, sums);
+          }
       }
     else
       {
+        SparseMatrix<double> A(sparsity);
+        A.copy_from(K);
+        Vector<double> rhs = system.load;
+        for (const auto &[row, piece] : springs)
+          {
+            spring(*row, *piece, spring_matrix, spring_force);
+            for (unsigned int a = 0; a < row->combination.size(); ++a)
+              {
+                rhs[row->combination[a].first] += spring_force[a];
+                for (unsigned int b = 0; b < row->combination.size(); ++b)
+                  A.add(row->combination[a].first,
+                        row->combination[b].first,
+                        spring_matrix(a, b));
+              }
+          }
+        constraints.condense(A, rhs);
         Timer               timer;
         SparseDirectUMFPACK direct;
         try
@@ -490,12 +622,7 @@ namespace hrcontact
           }
         catch (const std::exception &)
           {
-            throw InputError(
-              "Condensed path: the stiffness B F^-1 B^T with the current supports "
-              "is singular: the body has a zero-energy mode (a mechanism, an "
-              "unsupported body, or a stress space too poor for the mesh). The "
-              "null-space path (Equilibrium reduction/Path = null-space) names "
-              "the nodes the mode moves.");
+            throw InputError(singular_stiffness_message);
           }
         statistics.setup_seconds += timer.wall_time();
         u.reinit(n_u);
@@ -526,17 +653,33 @@ namespace hrcontact
   }
 
   void
-  CondensedStep::solve_cg_amg(const SparseMatrix<double> &A,
-                              const Vector<double>       &rhs)
+  CondensedStep::solve_direct_distributed()
   {
-    Timer timer;
-    // Keep every entry of the pattern (a negative drop tolerance): the zeros
-    // of rows constrained now are springs or stiffness in later steps.
-    amg->matrix.reinit(A, -1., true, &sparsity);
-    auto setup = [&]() {
+    Timer                                          timer;
+    SolverControl                                  control(1, 0);
+    TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Klu");
+    TrilinosWrappers::SolverDirect                 direct(control, data);
+    try
+      {
+        direct.solve(distributed->matrix, distributed->u, distributed->rhs);
+      }
+    catch (const std::exception &)
+      {
+        throw InputError(singular_stiffness_message);
+      }
+    statistics.solve_seconds += timer.wall_time();
+  }
+
+  void
+  CondensedStep::solve_cg_amg()
+  {
+    Timer       timer;
+    auto       &d     = *distributed;
+    const auto &rhs   = d.rhs;
+    auto        setup = [&]() {
       Timer setup_timer;
-      amg->preconditioner.clear();
-      amg->setup_matrix.reinit(A, -1., true, &sparsity);
+      d.preconditioner.clear();
+      d.setup_matrix.copy_from(d.matrix);
       // Smoothed aggregation for an elliptic operator; the near null space
       // is the rigid-body modes (ML's pre-computed null space), since the
       // translations alone (deal.II 9.4's constant modes) coarsen bending
@@ -546,57 +689,55 @@ namespace hrcontact
       data.higher_order_elements = false;
       data.smoother_sweeps       = settings.smoother_sweeps;
       data.aggregation_threshold = settings.aggregation_threshold;
-      const unsigned int dim     = system.dim;
-      data.constant_modes.assign(dim, std::vector<bool>(u.size(), false));
-      for (unsigned int i = 0; i < u.size(); ++i)
-        data.constant_modes[amg->component[i]][i] = true;
       Teuchos::ParameterList              list;
-      std::unique_ptr<Epetra_MultiVector> translations;
-      data.set_parameters(list, translations, amg->setup_matrix);
+      std::unique_ptr<Epetra_MultiVector> unused;
+      data.set_parameters(list, unused, d.setup_matrix);
+      const unsigned int dim     = system.dim;
       const unsigned int n_modes = (dim == 2) ? 3 : 6;
-      amg->modes                 = std::make_unique<Epetra_MultiVector>(
-        amg->setup_matrix.trilinos_matrix().DomainMap(), n_modes);
-      for (unsigned int i = 0; i < u.size(); ++i)
+      const auto        &map = d.setup_matrix.trilinos_matrix().DomainMap();
+      d.modes = std::make_unique<Epetra_MultiVector>(map, n_modes);
+      for (int k = 0; k < map.NumMyElements(); ++k)
         {
-          const unsigned int c = amg->component[i];
-          const auto        &x = amg->point[i];
+          const auto         i = TrilinosWrappers::global_index(map, k);
+          const unsigned int c = d.component[i];
+          const auto        &x = d.point[i];
           for (unsigned int m = 0; m < n_modes; ++m)
-            (*amg->modes)[m][i] = 0;
-          (*amg->modes)[c][i] = 1; // translations
+            (*d.modes)[m][k] = 0;
+          (*d.modes)[c][k] = 1; // translations
           // Rotations about the axes: (-y, x, 0), (0, -z, y), (z, 0, -x).
           if (dim == 2)
-            (*amg->modes)[2][i] = (c == 0) ? -x[1] : x[0];
+            (*d.modes)[2][k] = (c == 0) ? -x[1] : x[0];
           else
             {
-              (*amg->modes)[3][i] = (c == 0) ? -x[1] : (c == 1) ? x[0] : 0.;
-              (*amg->modes)[4][i] = (c == 1) ? -x[2] : (c == 2) ? x[1] : 0.;
-              (*amg->modes)[5][i] = (c == 2) ? -x[0] : (c == 0) ? x[2] : 0.;
+              (*d.modes)[3][k] = (c == 0) ? -x[1] : (c == 1) ? x[0] : 0.;
+              (*d.modes)[4][k] = (c == 1) ? -x[2] : (c == 2) ? x[1] : 0.;
+              (*d.modes)[5][k] = (c == 2) ? -x[0] : (c == 0) ? x[2] : 0.;
             }
         }
       list.set("null space: type", "pre-computed");
       list.set("null space: dimension", static_cast<int>(n_modes));
-      list.set("null space: vectors", amg->modes->Values());
+      list.set("null space: vectors", d.modes->Values());
       list.set("null space: add default vectors", false);
-      amg->preconditioner.initialize(amg->setup_matrix, list);
-      amg->built = true;
+      d.preconditioner.initialize(d.setup_matrix, list);
+      d.built = true;
       ++statistics.preconditioner_setups;
       statistics.setup_seconds += setup_timer.wall_time();
     };
     bool fresh = false;
-    if (!amg->built || !settings.reuse_preconditioner)
+    if (!d.built || !settings.reuse_preconditioner)
       {
         setup();
         fresh = true;
       }
     auto run_cg = [&]() {
-      SolverControl            control(settings.max_iterations,
+      SolverControl                           control(settings.max_iterations,
                             settings.tolerance * rhs.l2_norm(),
                             false,
                             false);
-      SolverCG<Vector<double>> cg(control);
+      SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
       try
         {
-          cg.solve(amg->matrix, u, rhs, amg->preconditioner);
+          cg.solve(d.matrix, d.u, rhs, d.preconditioner);
         }
       catch (const SolverControl::NoConvergence &)
         {
@@ -622,9 +763,9 @@ namespace hrcontact
         " iterations. Raise the limit, loosen the tolerance, or take Linear "
         "solver/Solver = direct.");
     if (fresh)
-      amg->iterations_after_setup = steps;
-    else if (steps > 2 * amg->iterations_after_setup + 5)
-      amg->built = false; // rebuild before the next solve
+      d.iterations_after_setup = steps;
+    else if (steps > 2 * d.iterations_after_setup + 5)
+      d.built = false; // rebuild before the next solve
     statistics.solve_seconds += timer.wall_time();
   }
 

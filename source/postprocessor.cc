@@ -71,6 +71,15 @@ namespace hrcontact
   }
 
   void
+  write_file_atomically(const MPI_Comm                             communicator,
+                        const std::string                         &filename,
+                        const std::function<void(std::ostream &)> &writer)
+  {
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      write_file_atomically(filename, writer);
+  }
+
+  void
   Summary::write(const std::string &filename) const
   {
     write_file_atomically(filename, [this](std::ostream &out) {
@@ -415,6 +424,70 @@ namespace hrcontact
     data_out.build_patches();
     write_file_atomically(filename,
                           [&](std::ostream &out) { data_out.write_vtu(out); });
+  }
+
+  template <int dim>
+  std::string
+  Postprocessor<dim>::write_solution(const MixedSpaces<dim> &spaces,
+                                     const Scene<dim>       &scene,
+                                     const Vector<double>   &u,
+                                     const Vector<double>   &s,
+                                     const DofPartition     &partition,
+                                     const std::string      &directory) const
+  {
+    if (!partition.distributed())
+      {
+        write_vtu(spaces, scene, u, s, directory + "/solution.vtu");
+        return "solution.vtu";
+      }
+    const auto &tria    = spaces.dof_handler_displacement.get_triangulation();
+    using cell_iterator = typename Triangulation<dim>::cell_iterator;
+    using active_cell_iterator =
+      typename Triangulation<dim>::active_cell_iterator;
+    const auto &owned = partition.owned_cell;
+    auto        skip  = [&](active_cell_iterator cell) -> cell_iterator {
+      while (cell != tria.end() && !owned[cell->active_cell_index()])
+        ++cell;
+      return cell;
+    };
+
+    DataOut<dim> data_out;
+    data_out.attach_triangulation(tria);
+    data_out.set_cell_selection(
+      [&](const Triangulation<dim> &) { return skip(tria.begin_active()); },
+      [&](const Triangulation<dim> &, const cell_iterator &cell) {
+        return skip(std::next(active_cell_iterator(cell)));
+      });
+    data_out.add_data_vector(
+      spaces.dof_handler_displacement,
+      u,
+      std::vector<std::string>(dim, "displacement"),
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        dim, DataComponentInterpretation::component_is_part_of_vector));
+    StressOutput<dim> stress_output(scene);
+    data_out.add_data_vector(spaces.dof_handler_stress, s, stress_output);
+    Vector<float> subdomain(tria.n_active_cells());
+    subdomain = partition.process;
+    data_out.add_data_vector(subdomain, "subdomain");
+    data_out.build_patches();
+
+    auto piece = [](const unsigned int p) {
+      return "solution_" + Utilities::int_to_string(p, 4) + ".vtu";
+    };
+    write_file_atomically(directory + "/" + piece(partition.process),
+                          [&](std::ostream &out) { data_out.write_vtu(out); });
+    // The record only once every piece is complete.
+    const int ierr = MPI_Barrier(partition.communicator);
+    AssertThrowMPI(ierr);
+    std::vector<std::string> pieces;
+    for (unsigned int p = 0; p < partition.n_processes; ++p)
+      pieces.push_back(piece(p));
+    write_file_atomically(partition.communicator,
+                          directory + "/solution.pvtu",
+                          [&](std::ostream &out) {
+                            data_out.write_pvtu_record(out, pieces);
+                          });
+    return "solution.pvtu";
   }
 
   template class Postprocessor<2>;

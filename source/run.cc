@@ -57,9 +57,14 @@ namespace hrcontact
 
   int
   run_parameter_file(const std::string &file,
-                     std::ostream      &log,
-                     std::ostream      &err)
+                     std::ostream      &log_on_root,
+                     std::ostream      &err_on_root)
   {
+    // Every process runs the same replicated iteration; process 0 speaks.
+    std::ostream  silent(nullptr); // discards what it is given
+    const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    std::ostream &log  = root ? log_on_root : silent;
+    std::ostream &err  = root ? err_on_root : silent;
     try
       {
         ParameterHandler prm;

@@ -53,7 +53,15 @@ namespace hrcontact
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
-    explicit HRProblem(dealii::ParameterHandler &prm);
+    /**
+     * A run on the processes of the communicator: the mesh, the HR blocks
+     * and the contact iteration are replicated; with several processes the
+     * condensed path's linear algebra is distributed by a p4est partition,
+     * process 0 writes the result files and each process its piece of
+     * solution.pvtu.
+     */
+    explicit HRProblem(dealii::ParameterHandler &prm,
+                       const MPI_Comm            communicator = MPI_COMM_WORLD);
 
     /** Everything up to and including the solve; no files written. */
     void
@@ -78,6 +86,9 @@ namespace hrcontact
     OutputSettings             output;
     dealii::Triangulation<dim> triangulation;
     EquilibriumSystem          system;
+    MPI_Comm                   mpi_communicator;
+    /** The p4est partition of the displacement dofs and cells. */
+    DofPartition partition;
 
     dealii::Vector<double> stress;
     dealii::Vector<double> displacement;

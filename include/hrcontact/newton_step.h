@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <hrcontact/constraint_law.h>
+#include <hrcontact/dof_partition.h>
 #include <hrcontact/equilibrium_reduction.h>
 #include <hrcontact/equilibrium_system.h>
 
@@ -144,16 +145,25 @@ namespace hrcontact
    * cell by cell (F is block diagonal), K = B F^{-1} B^T is a sparse SPD
    * displacement-like matrix; prescribed and pressed rows become
    * AffineConstraints (d . u = value), released rows add springs 1/alpha_i
-   * along their direction with the anchor g_i + mu_i; a sparse direct solve
-   * (UMFPACK) gives u, then s = F^{-1} B^T u per cell. Memory and work grow
-   * about linearly with the mesh, unlike the dense null-space path.
+   * along their direction with the anchor g_i + mu_i; the solve gives u, then
+   * s = F^{-1} B^T u per cell. Memory and work grow about linearly with the
+   * mesh, unlike the dense null-space path.
+   *
+   * Two back ends: the serial direct one condenses a deal.II matrix and
+   * factorises it with UMFPACK; the Trilinos one assembles K cell by cell
+   * into a distributed Trilinos matrix over the given DofPartition (every
+   * cell it owns, constraints applied while assembling, as in step-40) and
+   * solves it with CG + ML AMG, or with Amesos KLU when Solver = direct runs
+   * on several processes. The solution is then gathered on every process,
+   * where the stresses, the reactions p and the multiplier updates are
+   * computed alike.
    */
   class CondensedStep : public NewtonStepPath
   {
   public:
-    CondensedStep(
-      const EquilibriumSystem    &system,
-      const LinearSolverSettings &settings = LinearSolverSettings());
+    CondensedStep(const EquilibriumSystem    &system,
+                  const LinearSolverSettings &settings = LinearSolverSettings(),
+                  const DofPartition         *partition = nullptr);
     ~CondensedStep() override;
 
     using NewtonStepPath::solve;
@@ -169,22 +179,27 @@ namespace hrcontact
     contact_displacements(std::vector<double> &w) const override;
 
   private:
-    /** Solve A u = rhs by CG + AMG (u holds the initial guess). */
+    /** Solve the assembled Trilinos system by CG + AMG (warm start in u). */
     void
-    solve_cg_amg(const dealii::SparseMatrix<double> &A,
-                 const dealii::Vector<double>       &rhs);
+    solve_cg_amg();
+    /** Solve the assembled Trilinos system by Amesos KLU. */
+    void
+    solve_direct_distributed();
 
-    const EquilibriumSystem     &system;
-    const LinearSolverSettings   settings;
-    std::string                  solver;
+    const EquilibriumSystem   &system;
+    const LinearSolverSettings settings;
+    const DofPartition         partition;
+    std::string                solver;
+    /** Serial direct back end: the pattern and K itself. */
     dealii::SparsityPattern      sparsity;
     dealii::SparseMatrix<double> K;
     /** F_c^{-1} B_c^T per cell (stress dofs x displacement dofs). */
     std::vector<dealii::FullMatrix<double>> recovery;
-    dealii::Vector<double>                  u, s;
-    /** Trilinos objects of the AMG solver (kept between Newton steps). */
-    struct AMG;
-    std::unique_ptr<AMG> amg;
+    /** u gathered on this process, and the stresses. */
+    dealii::Vector<double> u, s;
+    /** Trilinos back end (kept between Newton steps). */
+    struct Distributed;
+    std::unique_ptr<Distributed> distributed;
   };
 } // namespace hrcontact
 

@@ -7,6 +7,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <hrcontact/dof_partition.h>
 #include <hrcontact/equilibrium_system.h>
 #include <hrcontact/mixed_spaces.h>
 #include <hrcontact/scene.h>
@@ -42,6 +43,15 @@ namespace hrcontact
   /** Write a file atomically: whole or not at all. */
   void
   write_file_atomically(const std::string                         &filename,
+                        const std::function<void(std::ostream &)> &writer);
+
+  /**
+   * The same on process 0 of the communicator only: every process holds the
+   * replicated results, one writes them.
+   */
+  void
+  write_file_atomically(const MPI_Comm                             communicator,
+                        const std::string                         &filename,
                         const std::function<void(std::ostream &)> &writer);
 
   /**
@@ -90,6 +100,19 @@ namespace hrcontact
               const dealii::Vector<double> &u,
               const dealii::Vector<double> &s,
               const std::string            &filename) const;
+
+    /**
+     * solution.vtu, or with several processes solution.pvtu and one piece
+     * solution_NNNN.vtu per process with the cells it owns (and a
+     * "subdomain" field). Returns the name written.
+     */
+    std::string
+    write_solution(const MixedSpaces<dim>       &spaces,
+                   const Scene<dim>             &scene,
+                   const dealii::Vector<double> &u,
+                   const dealii::Vector<double> &s,
+                   const DofPartition           &partition,
+                   const std::string            &directory) const;
 
     struct Probe
     {

@@ -22,7 +22,8 @@ namespace hrcontact
   /**
    * Run the scene of a parameter file: what the executable does. Returns
    * the exit code (0 on success); errors are printed to err as one clear
-   * message, and no result file is written.
+   * message, and no result file is written. Under mpirun, process 0 prints
+   * and writes; every process returns the same code.
    */
   int
   run_parameter_file(const std::string &file,

@@ -1,0 +1,64 @@
+#ifndef hrcontact_dof_partition_h
+#define hrcontact_dof_partition_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <string>
+#include <vector>
+
+namespace hrcontact
+{
+  /**
+   * Which displacement dofs and cells one MPI process owns in the condensed
+   * path's distributed linear algebra, in the numbering of the (replicated)
+   * serial DoFHandler. The mesh, the HR blocks and the contact rows stay
+   * replicated on every process; the stiffness K, its constraints, the AMG
+   * hierarchy and the CG vectors are distributed by this partition.
+   */
+  struct DofPartition
+  {
+    MPI_Comm     communicator = MPI_COMM_SELF;
+    unsigned int n_processes  = 1;
+    unsigned int process      = 0;
+    /** Dofs whose matrix rows this process assembles and solves for. */
+    dealii::IndexSet owned;
+    /** owned plus the dofs of the ghost cells (constraints live here). */
+    dealii::IndexSet relevant;
+    /** Per active cell index: whether this process assembles the cell. */
+    std::vector<bool> owned_cell;
+
+    bool
+    distributed() const
+    {
+      return n_processes > 1;
+    }
+    /** "2 processes, 1234 to 1250 dofs each", for the log. */
+    std::string
+    describe() const;
+  };
+
+  /** Everything owned by the one process of MPI_COMM_SELF. */
+  DofPartition
+  serial_partition(const unsigned int n_dofs, const unsigned int n_cells);
+
+  /**
+   * The partition of deal.II's p4est forest: a
+   * parallel::distributed::Triangulation is built from the coarse mesh of
+   * the serial one and refined to the same level; its cells (matched by
+   * CellId) and its dof ownership are carried over to the serial numbering.
+   * The serial mesh must be uniformly refined (every scene is). With one
+   * process this is serial_partition().
+   */
+  template <int dim>
+  DofPartition
+  partition_with_p4est(const dealii::Triangulation<dim> &triangulation,
+                       const dealii::DoFHandler<dim>    &dof_handler,
+                       const MPI_Comm                    communicator);
+} // namespace hrcontact
+
+#endif

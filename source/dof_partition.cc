@@ -1,0 +1,139 @@
+#include <deal.II/grid/grid_tools.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <hrcontact/dof_partition.h>
+#include <hrcontact/input.h>
+
+#include <algorithm>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  std::string
+  DofPartition::describe() const
+  {
+    const auto n_owned = Utilities::MPI::all_gather(
+      communicator, static_cast<unsigned long>(owned.n_elements()));
+    return std::to_string(n_processes) + " MPI processes (p4est partition), " +
+           std::to_string(*std::min_element(n_owned.begin(), n_owned.end())) +
+           " to " +
+           std::to_string(*std::max_element(n_owned.begin(), n_owned.end())) +
+           " displacement dofs each";
+  }
+
+  DofPartition
+  serial_partition(const unsigned int n_dofs, const unsigned int n_cells)
+  {
+    DofPartition partition;
+    partition.owned    = complete_index_set(n_dofs);
+    partition.relevant = complete_index_set(n_dofs);
+    partition.owned_cell.assign(n_cells, true);
+    return partition;
+  }
+
+  template <int dim>
+  DofPartition
+  partition_with_p4est(const Triangulation<dim> &triangulation,
+                       const DoFHandler<dim>    &dof_handler,
+                       const MPI_Comm            communicator)
+  {
+    const unsigned int n_processes =
+      Utilities::MPI::n_mpi_processes(communicator);
+    if (n_processes == 1)
+      return serial_partition(dof_handler.n_dofs(),
+                              triangulation.n_active_cells());
+
+    const unsigned int finest = triangulation.n_levels() - 1;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->level() != static_cast<int>(finest))
+        throw InputError("Parallel runs: the p4est partition needs a "
+                         "uniformly refined mesh (Mesh/Global refinements).");
+
+    // The forest: the coarse cells in the same order, without manifolds
+    // (only the topology matters for the partition), refined alike.
+    auto  description = GridTools::get_coarse_mesh_description(triangulation);
+    auto &vertices    = std::get<0>(description);
+    auto &cells       = std::get<1>(description);
+    auto &subcells    = std::get<2>(description);
+    for (auto &c : cells)
+      c.manifold_id = numbers::flat_manifold_id;
+    for (auto &l : subcells.boundary_lines)
+      l.manifold_id = numbers::flat_manifold_id;
+    for (auto &q : subcells.boundary_quads)
+      q.manifold_id = numbers::flat_manifold_id;
+    parallel::distributed::Triangulation<dim> forest(communicator);
+    forest.create_triangulation(vertices, cells, subcells);
+    forest.refine_global(finest);
+    DoFHandler<dim> forest_dofs(forest);
+    forest_dofs.distribute_dofs(dof_handler.get_fe());
+
+    DofPartition partition;
+    partition.communicator = communicator;
+    partition.n_processes  = n_processes;
+    partition.process      = Utilities::MPI::this_mpi_process(communicator);
+    partition.owned.set_size(dof_handler.n_dofs());
+    partition.relevant.set_size(dof_handler.n_dofs());
+    partition.owned_cell.assign(triangulation.n_active_cells(), false);
+
+    const IndexSet    &forest_owned = forest_dofs.locally_owned_dofs();
+    const unsigned int n            = dof_handler.get_fe().n_dofs_per_cell();
+    std::vector<types::global_dof_index> forest_cell_dofs(n), cell_dofs(n);
+    std::vector<types::global_dof_index> owned, relevant;
+    for (const auto &forest_cell : forest_dofs.active_cell_iterators())
+      {
+        if (forest_cell->is_artificial())
+          continue;
+        const auto serial =
+          triangulation.create_cell_iterator(forest_cell->id());
+        AssertThrow(serial->is_active(), ExcInternalError());
+        const typename DoFHandler<dim>::active_cell_iterator cell(
+          &triangulation, serial->level(), serial->index(), &dof_handler);
+        forest_cell->get_dof_indices(forest_cell_dofs);
+        cell->get_dof_indices(cell_dofs);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            relevant.push_back(cell_dofs[i]);
+            if (forest_owned.is_element(forest_cell_dofs[i]))
+              owned.push_back(cell_dofs[i]);
+          }
+        if (forest_cell->is_locally_owned())
+          partition.owned_cell[cell->active_cell_index()] = true;
+      }
+    std::sort(owned.begin(), owned.end());
+    owned.erase(std::unique(owned.begin(), owned.end()), owned.end());
+    std::sort(relevant.begin(), relevant.end());
+    relevant.erase(std::unique(relevant.begin(), relevant.end()),
+                   relevant.end());
+    partition.owned.add_indices(owned.begin(), owned.end());
+    partition.relevant.add_indices(relevant.begin(), relevant.end());
+    partition.owned.compress();
+    partition.relevant.compress();
+
+    // Every dof and cell has exactly one owner.
+    const auto n_owned = Utilities::MPI::sum(
+      static_cast<unsigned long>(partition.owned.n_elements()), communicator);
+    const auto n_cells =
+      Utilities::MPI::sum(static_cast<unsigned long>(
+                            std::count(partition.owned_cell.begin(),
+                                       partition.owned_cell.end(),
+                                       true)),
+                          communicator);
+    AssertThrow(n_owned == dof_handler.n_dofs() &&
+                  forest_owned.n_elements() == partition.owned.n_elements() &&
+                  n_cells == triangulation.n_active_cells(),
+                ExcMessage("the p4est partition does not map onto the serial "
+                           "mesh one to one"));
+    return partition;
+  }
+
+  template DofPartition
+  partition_with_p4est<2>(const Triangulation<2> &,
+                          const DoFHandler<2> &,
+                          const MPI_Comm);
+  template DofPartition
+  partition_with_p4est<3>(const Triangulation<3> &,
+                          const DoFHandler<3> &,
+                          const MPI_Comm);
+} // namespace hrcontact
