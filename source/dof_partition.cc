@@ -85,8 +85,21 @@ namespace hrcontact
       {
         if (forest_cell->is_artificial())
           continue;
-        const auto serial =
-          triangulation.create_cell_iterator(forest_cell->id());
+        // The same cell of the serial mesh: the coarse cell by its deal.II
+        // index (p4est numbers its trees differently), then the child path.
+        std::vector<unsigned int>                  path;
+        typename Triangulation<dim>::cell_iterator ancestor = forest_cell;
+        while (ancestor->level() > 0)
+          {
+            const auto parent = ancestor->parent();
+            path.push_back(parent->child_iterator_to_index(ancestor));
+            ancestor = parent;
+          }
+        typename Triangulation<dim>::cell_iterator serial(&triangulation,
+                                                          0,
+                                                          ancestor->index());
+        for (auto child = path.rbegin(); child != path.rend(); ++child)
+          serial = serial->child(*child);
         AssertThrow(serial->is_active(), ExcInternalError());
         const typename DoFHandler<dim>::active_cell_iterator cell(
           &triangulation, serial->level(), serial->index(), &dof_handler);

@@ -841,7 +841,8 @@ namespace hrcontact
   {
     solve(log);
     output_results(log);
-    if (output.print_timing)
+    if (output.print_timing &&
+        Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       timer.print_summary();
     if (has_contact && contact_solver.floating)
       throw NotConvergedError(

@@ -657,7 +657,7 @@ namespace hrcontact
   {
     Timer                                          timer;
     SolverControl                                  control(1, 0);
-    TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Klu");
+    TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Mumps");
     TrilinosWrappers::SolverDirect                 direct(control, data);
     try
       {

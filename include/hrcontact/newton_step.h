@@ -153,9 +153,9 @@ namespace hrcontact
    * factorises it with UMFPACK; the Trilinos one assembles K cell by cell
    * into a distributed Trilinos matrix over the given DofPartition (every
    * cell it owns, constraints applied while assembling, as in step-40) and
-   * solves it with CG + ML AMG, or with Amesos KLU when Solver = direct runs
-   * on several processes. The solution is then gathered on every process,
-   * where the stresses, the reactions p and the multiplier updates are
+   * solves it with CG + ML AMG, or with MUMPS (through Amesos) when Solver =
+   * direct runs on several processes. The solution is then gathered on every
+   * process, where the stresses, the reactions p and the multiplier updates are
    * computed alike.
    */
   class CondensedStep : public NewtonStepPath
@@ -182,7 +182,7 @@ namespace hrcontact
     /** Solve the assembled Trilinos system by CG + AMG (warm start in u). */
     void
     solve_cg_amg();
-    /** Solve the assembled Trilinos system by Amesos KLU. */
+    /** Solve the assembled Trilinos system by MUMPS through Amesos. */
     void
     solve_direct_distributed();
 
