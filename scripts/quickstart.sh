@@ -28,6 +28,8 @@ fi
 
 # deal.II's test runner and mpirun as root (CI and the development shells run as root).
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+# mpirun tests (.mpirun=2.output) may run beside another test on 2 cores.
+export OMPI_MCA_rmaps_base_oversubscribe=1
 # Dense LAPACK (the equilibrium reduction) uses both cores through OpenBLAS.
 jobs=${JOBS:-2}
 

@@ -23,6 +23,13 @@ namespace hrcontact
            " displacement dofs each";
   }
 
+  bool
+  is_root_process(const MPI_Comm communicator)
+  {
+    return !Utilities::MPI::job_supports_mpi() ||
+           Utilities::MPI::this_mpi_process(communicator) == 0;
+  }
+
   DofPartition
   serial_partition(const unsigned int n_dofs, const unsigned int n_cells)
   {
@@ -39,8 +46,11 @@ namespace hrcontact
                        const DoFHandler<dim>    &dof_handler,
                        const MPI_Comm            communicator)
   {
+    // Programs that never initialise MPI (small test programs) run serially.
     const unsigned int n_processes =
-      Utilities::MPI::n_mpi_processes(communicator);
+      Utilities::MPI::job_supports_mpi() ?
+        Utilities::MPI::n_mpi_processes(communicator) :
+        1;
     if (n_processes == 1)
       return serial_partition(dof_handler.n_dofs(),
                               triangulation.n_active_cells());

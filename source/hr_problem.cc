@@ -470,7 +470,7 @@ namespace hrcontact
           contact_pressure_summary(log);
         write_contact_tables();
       }
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    if (is_root_process(mpi_communicator))
       summary.write(output.directory + "/summary.txt");
     log << "  results in " << output.directory << "/ (summary.txt"
         << (output.write_vtu ? ", " + solution_file : "") << ")" << std::endl;
@@ -841,8 +841,7 @@ namespace hrcontact
   {
     solve(log);
     output_results(log);
-    if (output.print_timing &&
-        Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    if (output.print_timing && is_root_process(mpi_communicator))
       timer.print_summary();
     if (has_contact && contact_solver.floating)
       throw NotConvergedError(

@@ -75,7 +75,7 @@ namespace hrcontact
                         const std::string                         &filename,
                         const std::function<void(std::ostream &)> &writer)
   {
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+    if (is_root_process(communicator))
       write_file_atomically(filename, writer);
   }
 

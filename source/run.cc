@@ -62,7 +62,7 @@ namespace hrcontact
   {
     // Every process runs the same replicated iteration; process 0 speaks.
     std::ostream  silent(nullptr); // discards what it is given
-    const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    const bool    root = is_root_process(MPI_COMM_WORLD);
     std::ostream &log  = root ? log_on_root : silent;
     std::ostream &err  = root ? err_on_root : silent;
     try

@@ -22,12 +22,14 @@ namespace hrcontact_tests
   /** Build and solve a problem from parameter text (no files written). */
   template <int dim>
   std::unique_ptr<hrcontact::HRProblem<dim>>
-  solve_from_text(const std::string &text)
+  solve_from_text(const std::string &text,
+                  const MPI_Comm     communicator = MPI_COMM_WORLD)
   {
     dealii::ParameterHandler prm;
     hrcontact::declare_all_parameters(prm);
     prm.parse_input_from_string(text);
-    auto problem = std::make_unique<hrcontact::HRProblem<dim>>(prm);
+    auto problem =
+      std::make_unique<hrcontact::HRProblem<dim>>(prm, communicator);
     std::ostringstream quiet;
     problem->solve(quiet);
     return problem;

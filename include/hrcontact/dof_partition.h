@@ -42,6 +42,13 @@ namespace hrcontact
     describe() const;
   };
 
+  /**
+   * Whether this is process 0 of the communicator, the one that prints and
+   * writes; true in programs that never initialise MPI.
+   */
+  bool
+  is_root_process(const MPI_Comm communicator);
+
   /** Everything owned by the one process of MPI_COMM_SELF. */
   DofPartition
   serial_partition(const unsigned int n_dofs, const unsigned int n_cells);
