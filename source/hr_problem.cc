@@ -40,6 +40,16 @@ namespace hrcontact
                       "Print a table of wall times at the end of the run "
                       "(tests switch it off to keep their output "
                       "reproducible).");
+    prm.declare_entry(
+      "Time a linear elastic solve",
+      "false",
+      Patterns::Bool(),
+      "Benchmarks: before the contact iteration, solve the condensed system "
+      "once more with every contact row held at its gap (a linear elastic "
+      "problem on the same mesh and processes, from a fresh matrix and "
+      "preconditioner) and report its wall time as "
+      "linear_elastic_solve_seconds beside contact_solve_seconds in "
+      "summary.txt. Condensed path only; costs one extra solve.");
     prm.leave_subsection();
 
     // Contact postprocessing lives with the other postprocessing entries.
@@ -89,9 +99,10 @@ namespace hrcontact
   OutputSettings::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    directory    = prm.get("Output directory");
-    write_vtu    = prm.get_bool("Write solution");
-    print_timing = prm.get_bool("Print timing");
+    directory         = prm.get("Output directory");
+    write_vtu         = prm.get_bool("Write solution");
+    print_timing      = prm.get_bool("Print timing");
+    time_linear_solve = prm.get_bool("Time a linear elastic solve");
     prm.leave_subsection();
     prm.enter_subsection("Postprocess");
     hertz_load      = prm.get("Hertz load");
@@ -195,6 +206,23 @@ namespace hrcontact
           << "need about " << std::setprecision(3) << dense_bytes / 1e9
           << " GB)" << std::endl;
     }
+    const unsigned int nq  = system.contact_rows.size();
+    linear_elastic_seconds = 0;
+    if (output.time_linear_solve && solution_path == "condensed")
+      {
+        // A fresh path, so that nothing is reused from it.
+        Timer               elastic_timer;
+        std::vector<double> p;
+        CondensedStep(system, linear_solver, &partition)
+          .solve(std::vector<bool>(nq, false),
+                 std::vector<double>(nq, 0.),
+                 std::vector<double>(nq, 1.),
+                 p);
+        linear_elastic_seconds = elastic_timer.wall_time();
+        log << "  one linear elastic solve (contact rows held at their gaps): "
+            << linear_elastic_seconds << " s" << std::endl;
+      }
+    Timer                           contact_timer;
     std::unique_ptr<NewtonStepPath> path;
     {
       TimerOutput::Scope t(timer, "equilibrium reduction");
@@ -210,7 +238,6 @@ namespace hrcontact
     has_contact = false;
     for (const unsigned int r : system.contact_rows)
       has_contact |= system.rows[r].unilateral || system.rows[r].law;
-    const unsigned int nq = system.contact_rows.size();
     contact_w.assign(nq, 0.);
     if (has_contact)
       {
@@ -255,6 +282,7 @@ namespace hrcontact
         for (unsigned int k = 0; k < nq; ++k)
           contact_w[k] = system.rows[system.contact_rows[k]].value;
       }
+    contact_solve_seconds = contact_timer.wall_time();
     {
       TimerOutput::Scope t(timer, "displacements");
       path->stresses(stress);
@@ -319,6 +347,8 @@ namespace hrcontact
                     linear_statistics.preconditioner_setups);
         summary.add("linear_setup_seconds", linear_statistics.setup_seconds);
         summary.add("linear_solve_seconds", linear_statistics.solve_seconds);
+        if (output.time_linear_solve)
+          summary.add("linear_elastic_solve_seconds", linear_elastic_seconds);
       }
     if (solution_path == "null-space")
       summary.add("self_equilibrated_stresses",
@@ -450,6 +480,17 @@ namespace hrcontact
     if (output.write_vtu)
       solution_file = postprocessor.write_solution(
         spaces, scene, displacement, stress, partition, output.directory);
+    if (has_contact)
+      summary.add("contact_solve_seconds", contact_solve_seconds);
+    {
+      // Peak resident memory, summed over the processes.
+      Utilities::System::MemoryStats stats;
+      Utilities::System::get_memory_stats(stats);
+      double peak = stats.VmHWM / 1024.;
+      if (partition.distributed())
+        peak = Utilities::MPI::sum(peak, partition.communicator);
+      summary.add("peak_memory_MB", peak);
+    }
     summary.add(
       "wall_time",
       timer.get_summary_data(TimerOutput::total_wall_time).empty() ?

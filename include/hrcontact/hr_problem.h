@@ -37,6 +37,8 @@ namespace hrcontact
     std::string directory    = "output";
     bool        write_vtu    = true;
     bool        print_timing = true;
+    /** Benchmarks: time one linear elastic solve (see declare_parameters). */
+    bool time_linear_solve = false;
   };
 
   /**
@@ -94,6 +96,12 @@ namespace hrcontact
     dealii::Vector<double> displacement;
     /** "null-space" or "condensed": the path the run took. */
     std::string solution_path;
+    /**
+     * Wall time of building the Newton-step path and the contact iteration
+     * (or the one solve without contact), and of one linear elastic solve
+     * when Output/Time a linear elastic solve is set.
+     */
+    double contact_solve_seconds = 0, linear_elastic_seconds = 0;
     /** True when the scene has unilateral contact constraints. */
     bool has_contact = false;
     /** Rigid-body motions only the unilateral contacts hold. */
