@@ -507,12 +507,30 @@ namespace hrcontact
         else if (pieces[i].spring && owned(row))
           springs.emplace_back(&row, &pieces[i]);
       }
-    for (const auto &[node, rows] : held)
-      if (held_q_rows[node] > 1)
-        constrain_jointly(rows);
-      else
-        for (const auto &[row, value] : rows)
-          constrain(*row, value);
+    // A process sees only its relevant nodes: an error found at one of
+    // them must stop every process, or the others would wait in the
+    // assembly's communication.
+    std::string error;
+    try
+      {
+        for (const auto &[node, rows] : held)
+          if (held_q_rows[node] > 1)
+            constrain_jointly(rows);
+          else
+            for (const auto &[row, value] : rows)
+              constrain(*row, value);
+      }
+    catch (const InputError &e)
+      {
+        error = e.what();
+      }
+    if (partition.distributed())
+      for (const auto &e :
+           Utilities::MPI::all_gather(partition.communicator, error))
+        if (error.empty())
+          error = e;
+    if (!error.empty())
+      throw InputError(error);
     constraints.close();
 
     // A spring 1/compliance along d anchored at g + offset: the node matrix

@@ -403,30 +403,6 @@ namespace hrcontact
   }
 
   template <int dim>
-  void
-  Postprocessor<dim>::write_vtu(const MixedSpaces<dim> &spaces,
-                                const Scene<dim>       &scene,
-                                const Vector<double>   &u,
-                                const Vector<double>   &s,
-                                const std::string      &filename) const
-  {
-    DataOut<dim> data_out;
-    data_out.attach_triangulation(
-      spaces.dof_handler_displacement.get_triangulation());
-    data_out.add_data_vector(
-      spaces.dof_handler_displacement,
-      u,
-      std::vector<std::string>(dim, "displacement"),
-      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-        dim, DataComponentInterpretation::component_is_part_of_vector));
-    StressOutput<dim> stress_output(scene);
-    data_out.add_data_vector(spaces.dof_handler_stress, s, stress_output);
-    data_out.build_patches();
-    write_file_atomically(filename,
-                          [&](std::ostream &out) { data_out.write_vtu(out); });
-  }
-
-  template <int dim>
   std::string
   Postprocessor<dim>::write_solution(const MixedSpaces<dim> &spaces,
                                      const Scene<dim>       &scene,
@@ -435,11 +411,6 @@ namespace hrcontact
                                      const DofPartition     &partition,
                                      const std::string      &directory) const
   {
-    if (!partition.distributed())
-      {
-        write_vtu(spaces, scene, u, s, directory + "/solution.vtu");
-        return "solution.vtu";
-      }
     const auto &tria    = spaces.dof_handler_displacement.get_triangulation();
     using cell_iterator = typename Triangulation<dim>::cell_iterator;
     using active_cell_iterator =
@@ -453,11 +424,12 @@ namespace hrcontact
 
     DataOut<dim> data_out;
     data_out.attach_triangulation(tria);
-    data_out.set_cell_selection(
-      [&](const Triangulation<dim> &) { return skip(tria.begin_active()); },
-      [&](const Triangulation<dim> &, const cell_iterator &cell) {
-        return skip(std::next(active_cell_iterator(cell)));
-      });
+    if (partition.distributed())
+      data_out.set_cell_selection(
+        [&](const Triangulation<dim> &) { return skip(tria.begin_active()); },
+        [&](const Triangulation<dim> &, const cell_iterator &cell) {
+          return skip(std::next(active_cell_iterator(cell)));
+        });
     data_out.add_data_vector(
       spaces.dof_handler_displacement,
       u,
@@ -468,8 +440,17 @@ namespace hrcontact
     data_out.add_data_vector(spaces.dof_handler_stress, s, stress_output);
     Vector<float> subdomain(tria.n_active_cells());
     subdomain = partition.process;
-    data_out.add_data_vector(subdomain, "subdomain");
+    if (partition.distributed())
+      data_out.add_data_vector(subdomain, "subdomain");
     data_out.build_patches();
+    if (!partition.distributed())
+      {
+        write_file_atomically(directory + "/solution.vtu",
+                              [&](std::ostream &out) {
+                                data_out.write_vtu(out);
+                              });
+        return "solution.vtu";
+      }
 
     auto piece = [](const unsigned int p) {
       return "solution_" + Utilities::int_to_string(p, 4) + ".vtu";

@@ -94,13 +94,6 @@ namespace hrcontact
              Summary                      &summary,
              std::ostream                 &log) const;
 
-    void
-    write_vtu(const MixedSpaces<dim>       &spaces,
-              const Scene<dim>             &scene,
-              const dealii::Vector<double> &u,
-              const dealii::Vector<double> &s,
-              const std::string            &filename) const;
-
     /**
      * solution.vtu, or with several processes solution.pvtu and one piece
      * solution_NNNN.vtu per process with the cells it owns (and a
