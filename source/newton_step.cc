@@ -33,10 +33,12 @@ namespace hrcontact
       "automatic",
       Patterns::Selection("automatic|direct|cg-amg"),
       "Condensed path only: how each Newton step's sparse SPD system is "
-      "solved. direct: UMFPACK (exact, memory grows fast in 3D); cg-amg: CG "
-      "preconditioned by Trilinos ML smoothed-aggregation AMG with the "
-      "rigid-body modes as near null space; automatic: direct up to Direct "
-      "solver limit unknowns (per dimension), cg-amg above.");
+      "solved. direct: UMFPACK (exact, memory grows fast in 3D), or MUMPS "
+      "through Trilinos Amesos under mpirun; cg-amg: CG preconditioned by "
+      "Trilinos ML smoothed-aggregation AMG with the rigid-body modes as near "
+      "null space, distributed over the processes under mpirun; automatic: "
+      "direct up to Direct solver limit unknowns (per dimension), cg-amg "
+      "above.");
     prm.declare_entry("Direct solver limit 2D",
                       "1e5",
                       Patterns::Double(0),
