@@ -9,6 +9,8 @@
 #   bash scripts/benchmark-scaling.sh                       # default set
 #   RUNS="hertz:7:condensed:2 block-3d-contact:3:condensed:1" REPEAT=3 \
 #     bash scripts/benchmark-scaling.sh
+# EXTRA_PRM is appended to every generated .prm, e.g.
+#   EXTRA_PRM=$'subsection Augmented Lagrangian\n  set Iteration scheme = diagonal\nend'
 # RUNS entries are scene:refinements:path:processes. With REPEAT > 1 each
 # configuration runs that often and the seconds are medians (the other
 # columns do not change between repetitions). Needs a Release build in
@@ -38,6 +40,7 @@ for run in $runs; do
     echo "  set Print timing = false"
     [ "$path" = condensed ] && echo "  set Time a linear elastic solve = true"
     echo "end"
+    echo "${EXTRA_PRM:-}"
   } > "$out.prm"
   cmd=("$exe" "$out.prm")
   [ "$np" -gt 1 ] && cmd=(mpirun -np "$np" "${cmd[@]}")
