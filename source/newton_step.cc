@@ -566,16 +566,15 @@ namespace hrcontact
         auto &rhs = distributed->rhs;
         A         = 0;
         rhs       = 0;
+        // Loads enter per dof below; the cells bring stiffness only.
+        Vector<double> no_cell_force;
         for (unsigned int c = 0; c < recovery.size(); ++c)
           if (partition.owned_cell[c])
             {
               const auto &du = system.cell_displacement_dofs[c];
+              no_cell_force.reinit(du.size());
               constraints.distribute_local_to_global(
-                distributed->cell_stiffness[c],
-                Vector<double>(du.size()),
-                du,
-                A,
-                rhs);
+                distributed->cell_stiffness[c], no_cell_force, du, A, rhs);
             }
         for (const auto &[row, piece] : springs)
           {

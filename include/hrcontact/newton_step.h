@@ -57,8 +57,10 @@ namespace hrcontact
     unsigned int solves                = 0;
     unsigned int iterations            = 0;
     unsigned int preconditioner_setups = 0;
-    double       setup_seconds         = 0;
-    double       solve_seconds         = 0;
+    /** UMFPACK factorisations; AMG set-ups and, for the Trilinos back end,
+     * the assembly of the distributed matrix. */
+    double setup_seconds = 0;
+    double solve_seconds = 0;
   };
 
   /**
