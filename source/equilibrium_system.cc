@@ -32,6 +32,55 @@ namespace hrcontact
         v[it->column()] += coefficient * c * it->value();
   }
 
+  void
+  EquilibriumSystem::for_each_cell_blocks(
+    const std::function<bool(unsigned int)>       &filter,
+    const std::function<void(const CellBlocks &)> &worker) const
+  {
+    bool all_stored = true;
+    for (unsigned int c = 0; c < n_cells() && all_stored; ++c)
+      all_stored = !filter(c) || is_stored(c);
+    if (!all_stored)
+      {
+        Assert(recompute_cell_blocks, ExcInternalError());
+        recompute_cell_blocks(filter, worker);
+        return;
+      }
+    // From storage. The cell load is not kept per cell: left empty.
+    CellBlocks blocks;
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      if (filter(c))
+        {
+          blocks.cell              = c;
+          blocks.displacement_dofs = cell_displacement_dofs[c];
+          blocks.stress_dofs       = cell_stress_dofs[c];
+          const auto &du           = blocks.displacement_dofs;
+          const auto &ds           = blocks.stress_dofs;
+          blocks.B.reinit(du.size(), ds.size());
+          for (unsigned int i = 0; i < du.size(); ++i)
+            for (unsigned int j = 0; j < ds.size(); ++j)
+              blocks.B(i, j) = B.el(du[i], ds[j]);
+          blocks.F = cell_flexibility[c];
+          worker(blocks);
+        }
+  }
+
+  void
+  EquilibriumSystem::equilibrium_residual(const Vector<double> &s,
+                                          Vector<double>       &residual) const
+  {
+    residual = load;
+    residual *= -1;
+    for_each_cell_blocks([](const unsigned int) { return true; },
+                         [&](const CellBlocks &b) {
+                           const auto &du = b.displacement_dofs;
+                           const auto &ds = b.stress_dofs;
+                           for (unsigned int i = 0; i < du.size(); ++i)
+                             for (unsigned int j = 0; j < ds.size(); ++j)
+                               residual[du[i]] += b.B(i, j) * s[ds[j]];
+                         });
+  }
+
   double
   EquilibriumSystem::row_load(const EquilibriumRow &row) const
   {

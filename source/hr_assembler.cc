@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -31,23 +32,21 @@ namespace hrcontact
   void
   HRAssembler<dim>::assemble(EquilibriumSystem &system) const
   {
-    assemble_blocks(system);
     classify_rows(system);
+    assemble_blocks(system);
   }
 
   template <int dim>
   void
-  HRAssembler<dim>::assemble_blocks(EquilibriumSystem &system) const
+  HRAssembler<dim>::for_each_cell(
+    const std::function<bool(unsigned int)>       &filter,
+    const std::function<void(const CellBlocks &)> &worker) const
   {
     const DoFHandler<dim> &dh_u   = spaces.dof_handler_displacement;
     const DoFHandler<dim> &dh_s   = spaces.dof_handler_stress;
     const auto            &fe_u   = *spaces.fe_displacement;
     const auto            &fe_s   = *spaces.fe_stress;
     constexpr unsigned int n_comp = MixedSpaces<dim>::n_stress_components;
-
-    system.dim                 = dim;
-    system.n_displacement_dofs = dh_u.n_dofs();
-    system.n_stress_dofs       = dh_s.n_dofs();
 
     // Q1 x DGQ1 products are integrated exactly on parallelograms by 2 Gauss
     // points per direction; so are the constant-stress patch tests on
@@ -76,43 +75,33 @@ namespace hrcontact
       for (unsigned int d = 0; d < n_comp; ++d)
         K(c, d) = T[c] * scene.strain_from_stress(T[d]);
 
-    DynamicSparsityPattern dsp(dh_u.n_dofs(), dh_s.n_dofs());
-    {
-      std::vector<types::global_dof_index> du(n_u), ds(n_s);
-      auto                                 cs = dh_s.begin_active();
-      for (const auto &cu : dh_u.active_cell_iterators())
-        {
-          cu->get_dof_indices(du);
-          cs->get_dof_indices(ds);
-          for (const auto i : du)
-            for (const auto j : ds)
-              dsp.add(i, j);
-          ++cs;
-        }
-    }
-    system.sparsity.copy_from(dsp);
-    system.B.reinit(system.sparsity);
-    system.load.reinit(dh_u.n_dofs());
-    system.cell_stress_dofs.assign(dh_s.get_triangulation().n_active_cells(),
-                                   {});
-    system.cell_displacement_dofs.assign(
-      dh_s.get_triangulation().n_active_cells(), {});
-    system.cell_flexibility.assign(dh_s.get_triangulation().n_active_cells(),
-                                   FullMatrix<double>());
-
-    std::vector<types::global_dof_index> du(n_u), ds(n_s);
-    FullMatrix<double>                   Bc(n_u, n_s);
-    Vector<double>                       fc(n_u);
-    Vector<double>                       force(dim), pressure(dim);
-    auto                                 cs = dh_s.begin_active();
+    CellBlocks blocks;
+    auto      &du = blocks.displacement_dofs;
+    auto      &ds = blocks.stress_dofs;
+    auto      &Fc = blocks.F;
+    auto      &Bc = blocks.B;
+    auto      &fc = blocks.load;
+    du.resize(n_u);
+    ds.resize(n_s);
+    Bc.reinit(n_u, n_s);
+    Fc.reinit(n_s, n_s);
+    fc.reinit(n_u);
+    Vector<double> force(dim), pressure(dim);
+    auto           cs = dh_s.begin_active();
     for (const auto &cu : dh_u.active_cell_iterators())
       {
+        blocks.cell = cu->active_cell_index();
+        if (!filter(blocks.cell))
+          {
+            ++cs;
+            continue;
+          }
         fv_u.reinit(cu);
         fv_s.reinit(cs);
         cu->get_dof_indices(du);
         cs->get_dof_indices(ds);
 
-        FullMatrix<double> Fc(n_s, n_s);
+        Fc = 0;
         Bc = 0;
         fc = 0;
         for (unsigned int q = 0; q < quadrature.size(); ++q)
@@ -213,17 +202,133 @@ namespace hrcontact
                   << cu->center() << ").";
                 throw InputError(s.str());
               }
-            system.load(du[i]) += fc(i);
-            for (unsigned int j = 0; j < n_s; ++j)
-              if (Bc(i, j) != 0)
-                system.B.add(du[i], ds[j], Bc(i, j));
           }
-        const unsigned int index             = cu->active_cell_index();
-        system.cell_stress_dofs[index]       = ds;
-        system.cell_displacement_dofs[index] = du;
-        system.cell_flexibility[index]       = Fc;
+        worker(blocks);
         ++cs;
       }
+  }
+
+  template <int dim>
+  void
+  HRAssembler<dim>::assemble_blocks(EquilibriumSystem  &system,
+                                    const DofPartition *lean) const
+  {
+    const DoFHandler<dim> &dh_u    = spaces.dof_handler_displacement;
+    const unsigned int     n_cells = dh_u.get_triangulation().n_active_cells();
+    system.dim                     = dim;
+    system.n_displacement_dofs     = dh_u.n_dofs();
+    system.n_stress_dofs           = spaces.dof_handler_stress.n_dofs();
+
+    // The stored cells: all, or those touching a Q or H row's node.
+    system.stored_cell.clear();
+    if (lean)
+      {
+        std::vector<bool> constrained(dh_u.n_dofs(), false);
+        for (const auto &row : system.rows)
+          if (row.row_class != RowClass::free)
+            for (const auto &[dof, c] : row.combination)
+              constrained[dof] = true;
+        system.stored_cell.assign(n_cells, false);
+        std::vector<types::global_dof_index> du;
+        for (const auto &cu : dh_u.active_cell_iterators())
+          {
+            du.resize(cu->get_fe().n_dofs_per_cell());
+            cu->get_dof_indices(du);
+            for (const auto i : du)
+              if (constrained[i])
+                system.stored_cell[cu->active_cell_index()] = true;
+          }
+      }
+    auto stored = [&](const unsigned int c) { return system.is_stored(c); };
+    auto owned  = [&](const unsigned int c) {
+      return !lean || lean->owned_cell[c];
+    };
+
+    {
+      DynamicSparsityPattern dsp(dh_u.n_dofs(), system.n_stress_dofs);
+      std::vector<types::global_dof_index> du, ds;
+      auto cs = spaces.dof_handler_stress.begin_active();
+      for (const auto &cu : dh_u.active_cell_iterators())
+        {
+          if (stored(cu->active_cell_index()))
+            {
+              du.resize(cu->get_fe().n_dofs_per_cell());
+              ds.resize(cs->get_fe().n_dofs_per_cell());
+              cu->get_dof_indices(du);
+              cs->get_dof_indices(ds);
+              for (const auto i : du)
+                for (const auto j : ds)
+                  dsp.add(i, j);
+            }
+          ++cs;
+        }
+      system.sparsity.copy_from(dsp);
+    }
+    system.B.reinit(system.sparsity);
+    system.load.reinit(dh_u.n_dofs());
+    system.cell_stress_dofs.assign(n_cells, {});
+    system.cell_displacement_dofs.assign(n_cells, {});
+    system.cell_flexibility.assign(n_cells, FullMatrix<double>());
+
+    // A process checks only the cells it evaluates: an error found there
+    // must stop every process before the load is summed.
+    std::string error;
+    try
+      {
+        for_each_cell([&](
+                        const unsigned int c) { return owned(c) || stored(c); },
+                      [&](const CellBlocks &b) {
+                        const auto &du = b.displacement_dofs;
+                        const auto &ds = b.stress_dofs;
+                        if (owned(b.cell))
+                          for (unsigned int i = 0; i < du.size(); ++i)
+                            system.load(du[i]) += b.load(i);
+                        if (!stored(b.cell))
+                          return;
+                        for (unsigned int i = 0; i < du.size(); ++i)
+                          for (unsigned int j = 0; j < ds.size(); ++j)
+                            if (b.B(i, j) != 0)
+                              system.B.add(du[i], ds[j], b.B(i, j));
+                        system.cell_stress_dofs[b.cell]       = ds;
+                        system.cell_displacement_dofs[b.cell] = du;
+                        system.cell_flexibility[b.cell]       = b.F;
+                      });
+      }
+    catch (const InputError &e)
+      {
+        error = e.what();
+      }
+    if (lean && lean->distributed())
+      {
+        for (const auto &e :
+             Utilities::MPI::all_gather(lean->communicator, error))
+          if (error.empty())
+            error = e;
+        if (error.empty())
+          {
+            const ArrayView<const double> values(system.load.begin(),
+                                                 system.load.size());
+            const ArrayView<double>       sums(system.load.begin(),
+                                         system.load.size());
+            Utilities::MPI::sum(values, lean->communicator, sums);
+          }
+      }
+    if (!error.empty())
+      throw InputError(error);
+
+    if (lean)
+      {
+        const Scene<dim>       &scene_  = scene;
+        const MixedSpaces<dim> &spaces_ = spaces;
+        system.recompute_cell_blocks =
+          [&scene_,
+           &spaces_](const std::function<bool(unsigned int)>       &filter,
+                     const std::function<void(const CellBlocks &)> &worker) {
+            HRAssembler<dim>(scene_, spaces_).for_each_cell(filter, worker);
+          };
+      }
+    else
+      system.recompute_cell_blocks = nullptr;
   }
 
   template <int dim>
@@ -232,6 +337,9 @@ namespace hrcontact
   {
     const DoFHandler<dim> &dh_u = spaces.dof_handler_displacement;
     const auto            &tria = dh_u.get_triangulation();
+    system.dim                  = dim;
+    system.n_displacement_dofs  = dh_u.n_dofs();
+    system.n_stress_dofs        = spaces.dof_handler_stress.n_dofs();
 
     // Nodes: the used vertices, numbered in vertex order.
     std::vector<int> node_of_vertex(tria.n_vertices(), -1);

@@ -164,9 +164,10 @@ namespace hrcontact
     if (partition.distributed())
       log << "  parallel: " << partition.describe() << std::endl;
 
+    const HRAssembler<dim> assembler(scene, spaces);
     {
       TimerOutput::Scope t(timer, "assembly");
-      HRAssembler<dim>(scene, spaces).assemble(system);
+      assembler.classify_rows(system);
     }
     log << "  rows: " << system.free_rows.size() << " free (C), "
         << system.contact_rows.size() << " normal (Q), "
@@ -175,7 +176,8 @@ namespace hrcontact
     // The path of the Newton steps: the paper's dense null-space reduction,
     // or the condensed sparse system once the dense one would be too big.
     {
-      const double n = system.free_rows.size(), tau = system.n_stress_dofs;
+      const double n           = system.free_rows.size(),
+                   tau         = spaces.dof_handler_stress.n_dofs();
       const double m           = std::max(0., tau - n);
       const double dense_bytes = 8 * (tau * n + n * m + 2 * m * m);
       solution_path            = reduction.path;
@@ -205,6 +207,13 @@ namespace hrcontact
           << " (dense reduction would "
           << "need about " << std::setprecision(3) << dense_bytes / 1e9
           << " GB)" << std::endl;
+    }
+    {
+      // The condensed path keeps only the blocks the contact rows need.
+      TimerOutput::Scope t(timer, "assembly");
+      assembler.assemble_blocks(system,
+                                solution_path == "condensed" ? &partition :
+                                                               nullptr);
     }
     const unsigned int nq  = system.contact_rows.size();
     linear_elastic_seconds = 0;

@@ -133,8 +133,11 @@ namespace hrcontact
     /** Rigid-body modes per dof: component and node coordinates. */
     std::vector<unsigned int>          component;
     std::vector<std::array<double, 3>> point;
-    /** K_c of the cells this process owns (empty for the others). */
-    std::vector<FullMatrix<double>> cell_stiffness;
+    /** The cells this process owns, their displacement dofs and K_c, one
+     * after the other (n_u and n_u x n_u numbers per cell). */
+    std::vector<unsigned int>            cells;
+    std::vector<types::global_dof_index> cell_dofs;
+    std::vector<double>                  cell_stiffness;
   };
 
   // ------------------------------------------------------------------------
@@ -326,7 +329,7 @@ namespace hrcontact
                                    system.cell_stress_dofs.size()))
   {
     const unsigned int n_u     = system.n_displacement_dofs;
-    const unsigned int n_cells = system.cell_stress_dofs.size();
+    const unsigned int n_cells = system.n_cells();
     solver                     = settings.choose(n_u, system.dim);
     statistics.solver          = solver;
     if (solver == "cg-amg" || partition.distributed())
@@ -341,15 +344,63 @@ namespace hrcontact
               distributed->point[row.combination[k].first] =
                 system.node_coordinates[row.node];
             }
-        distributed->cell_stiffness.resize(n_cells);
+      }
+
+    // One pass over the cells this process owns and those whose stresses
+    // every step needs, from the stored blocks or recomputed (a lean
+    // system): K_c = B_c F_c^{-1} B_c^T of the owned cells, kept for the
+    // Trilinos back end and added to K for the serial one, and F_c^{-1} B_c^T
+    // of the stored cells.
+    std::vector<unsigned int>            owned_cells;
+    std::vector<types::global_dof_index> owned_dofs;
+    std::vector<double>                  owned_stiffness;
+    recovery_complete = true;
+    for (unsigned int c = 0; c < n_cells; ++c)
+      recovery_complete &= system.is_stored(c);
+    FullMatrix<double> Finv, R, Kc;
+    system.for_each_cell_blocks(
+      [&](const unsigned int c) {
+        return partition.owned_cell[c] || system.is_stored(c);
+      },
+      [&](const CellBlocks &b) {
+        const auto &du = b.displacement_dofs;
+        const auto &ds = b.stress_dofs;
+        Finv.reinit(ds.size(), ds.size());
+        Finv.invert(b.F);
+        R.reinit(ds.size(), du.size());
+        Finv.mTmult(R, b.B); // F^{-1} B^T
+        if (partition.owned_cell[b.cell])
+          {
+            Kc.reinit(du.size(), du.size());
+            b.B.mmult(Kc, R);
+            owned_cells.push_back(b.cell);
+            owned_dofs.insert(owned_dofs.end(), du.begin(), du.end());
+            for (unsigned int i = 0; i < du.size(); ++i)
+              for (unsigned int j = 0; j < du.size(); ++j)
+                owned_stiffness.push_back(Kc(i, j));
+          }
+        if (system.is_stored(b.cell))
+          {
+            recovery_cells.push_back(b.cell);
+            recovery.push_back(R);
+          }
+      });
+    const unsigned int n_per_cell =
+      owned_cells.empty() ? 0 : owned_dofs.size() / owned_cells.size();
+    auto cell_dofs = [&](const unsigned int k) {
+      return ArrayView<const types::global_dof_index>(
+        owned_dofs.data() + std::size_t(k) * n_per_cell, n_per_cell);
+    };
+
+    if (distributed)
+      {
         // The step-40 idiom: the couplings of the owned cells, sent to the
         // owners of their rows.
         DynamicSparsityPattern dsp(partition.relevant);
-        for (unsigned int c = 0; c < n_cells; ++c)
-          if (partition.owned_cell[c])
-            for (const auto i : system.cell_displacement_dofs[c])
-              for (const auto j : system.cell_displacement_dofs[c])
-                dsp.add(i, j);
+        for (unsigned int k = 0; k < owned_cells.size(); ++k)
+          for (const auto i : cell_dofs(k))
+            for (const auto j : cell_dofs(k))
+              dsp.add(i, j);
         SparsityTools::distribute_sparsity_pattern(dsp,
                                                    partition.owned,
                                                    partition.communicator,
@@ -360,42 +411,30 @@ namespace hrcontact
                                    partition.communicator);
         distributed->rhs.reinit(partition.owned, partition.communicator);
         distributed->u.reinit(partition.owned, partition.communicator);
+        distributed->cells          = std::move(owned_cells);
+        distributed->cell_dofs      = std::move(owned_dofs);
+        distributed->cell_stiffness = std::move(owned_stiffness);
       }
     else
       {
-        DynamicSparsityPattern dsp(n_u, n_u);
-        for (const auto &dofs : system.cell_displacement_dofs)
-          for (const auto i : dofs)
-            for (const auto j : dofs)
-              dsp.add(i, j);
-        sparsity.copy_from(dsp);
+        {
+          DynamicSparsityPattern dsp(n_u, n_u);
+          for (unsigned int k = 0; k < owned_cells.size(); ++k)
+            for (const auto i : cell_dofs(k))
+              for (const auto j : cell_dofs(k))
+                dsp.add(i, j);
+          sparsity.copy_from(dsp);
+        }
         K.reinit(sparsity);
-      }
-
-    // K_c = B_c F_c^{-1} B_c^T, and F_c^{-1} B_c^T kept for the stresses.
-    recovery.resize(n_cells);
-    for (unsigned int c = 0; c < n_cells; ++c)
-      {
-        const auto        &du = system.cell_displacement_dofs[c];
-        const auto        &ds = system.cell_stress_dofs[c];
-        FullMatrix<double> Bc(du.size(), ds.size());
-        for (unsigned int i = 0; i < du.size(); ++i)
-          for (unsigned int j = 0; j < ds.size(); ++j)
-            Bc(i, j) = system.B.el(du[i], ds[j]);
-        FullMatrix<double> Finv(ds.size(), ds.size());
-        Finv.invert(system.cell_flexibility[c]);
-        recovery[c].reinit(ds.size(), du.size());
-        Finv.mTmult(recovery[c], Bc); // F^{-1} B^T
-        if (distributed && !partition.owned_cell[c])
-          continue;
-        FullMatrix<double> Kc(du.size(), du.size());
-        Bc.mmult(Kc, recovery[c]);
-        if (distributed)
-          distributed->cell_stiffness[c] = std::move(Kc);
-        else
-          for (unsigned int i = 0; i < du.size(); ++i)
-            for (unsigned int j = 0; j < du.size(); ++j)
-              K.add(du[i], du[j], Kc(i, j));
+        for (unsigned int k = 0; k < owned_cells.size(); ++k)
+          {
+            const auto    dofs = cell_dofs(k);
+            const double *Kk =
+              owned_stiffness.data() + std::size_t(k) * n_per_cell * n_per_cell;
+            for (unsigned int i = 0; i < n_per_cell; ++i)
+              for (unsigned int j = 0; j < n_per_cell; ++j)
+                K.add(dofs[i], dofs[j], Kk[i * n_per_cell + j]);
+          }
       }
   }
 
@@ -567,15 +606,26 @@ namespace hrcontact
         A         = 0;
         rhs       = 0;
         // Loads enter per dof below; the cells bring stiffness only.
-        Vector<double> no_cell_force;
-        for (unsigned int c = 0; c < recovery.size(); ++c)
-          if (partition.owned_cell[c])
-            {
-              const auto &du = system.cell_displacement_dofs[c];
-              no_cell_force.reinit(du.size());
-              constraints.distribute_local_to_global(
-                distributed->cell_stiffness[c], no_cell_force, du, A, rhs);
-            }
+        const auto        &d = *distributed;
+        const unsigned int n_per_cell =
+          d.cells.empty() ? 0 : d.cell_dofs.size() / d.cells.size();
+        Vector<double>                       no_cell_force(n_per_cell);
+        FullMatrix<double>                   Kc(n_per_cell, n_per_cell);
+        std::vector<types::global_dof_index> du(n_per_cell);
+        for (unsigned int k = 0; k < d.cells.size(); ++k)
+          {
+            const std::size_t first = std::size_t(k) * n_per_cell;
+            std::copy(d.cell_dofs.begin() + first,
+                      d.cell_dofs.begin() + first + n_per_cell,
+                      du.begin());
+            const double *values = d.cell_stiffness.data() + first * n_per_cell;
+            for (unsigned int i = 0; i < n_per_cell; ++i)
+              for (unsigned int j = 0; j < n_per_cell; ++j)
+                Kc(i, j) = values[i * n_per_cell + j];
+            no_cell_force = 0;
+            constraints.distribute_local_to_global(
+              Kc, no_cell_force, du, A, rhs);
+          }
         for (const auto &[row, piece] : springs)
           {
             spring(*row, *piece, spring_matrix, spring_force);
@@ -651,15 +701,16 @@ namespace hrcontact
       }
 
     s.reinit(system.n_stress_dofs);
-    for (unsigned int c = 0; c < recovery.size(); ++c)
+    for (unsigned int k = 0; k < recovery_cells.size(); ++k)
       {
-        const auto &du = system.cell_displacement_dofs[c];
-        const auto &ds = system.cell_stress_dofs[c];
+        const unsigned int c  = recovery_cells[k];
+        const auto        &du = system.cell_displacement_dofs[c];
+        const auto        &ds = system.cell_stress_dofs[c];
         for (unsigned int i = 0; i < ds.size(); ++i)
           {
             double sum = 0;
             for (unsigned int j = 0; j < du.size(); ++j)
-              sum += recovery[c](i, j) * u[du[j]];
+              sum += recovery[k](i, j) * u[du[j]];
             s[ds[i]] = sum;
           }
       }
@@ -791,7 +842,49 @@ namespace hrcontact
   void
   CondensedStep::stresses(Vector<double> &stress) const
   {
-    stress = s;
+    if (recovery_complete)
+      {
+        stress = s;
+        return;
+      }
+    // A lean system: every process recovers its own cells, the stored ones
+    // from their kept F_c^{-1} B_c^T, the others from recomputed blocks, in
+    // the same operations; the stress dofs of a cell are its own, so the
+    // sum over the processes assembles s.
+    stress.reinit(system.n_stress_dofs);
+    for (unsigned int k = 0; k < recovery_cells.size(); ++k)
+      if (partition.owned_cell[recovery_cells[k]])
+        {
+          const auto &ds = system.cell_stress_dofs[recovery_cells[k]];
+          for (const auto i : ds)
+            stress[i] = s[i];
+        }
+    FullMatrix<double> Finv, R;
+    system.for_each_cell_blocks(
+      [&](const unsigned int c) {
+        return partition.owned_cell[c] && !system.is_stored(c);
+      },
+      [&](const CellBlocks &b) {
+        const auto &du = b.displacement_dofs;
+        const auto &ds = b.stress_dofs;
+        Finv.reinit(ds.size(), ds.size());
+        Finv.invert(b.F);
+        R.reinit(ds.size(), du.size());
+        Finv.mTmult(R, b.B);
+        for (unsigned int i = 0; i < ds.size(); ++i)
+          {
+            double sum = 0;
+            for (unsigned int j = 0; j < du.size(); ++j)
+              sum += R(i, j) * u[du[j]];
+            stress[ds[i]] = sum;
+          }
+      });
+    if (partition.distributed())
+      {
+        const ArrayView<const double> values(stress.begin(), stress.size());
+        const ArrayView<double>       sums(stress.begin(), stress.size());
+        Utilities::MPI::sum(values, partition.communicator, sums);
+      }
   }
 
   void

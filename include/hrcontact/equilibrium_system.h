@@ -9,6 +9,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -67,6 +68,22 @@ namespace hrcontact
     std::shared_ptr<const ConstraintLaw> law;
   };
 
+  /** The blocks of one cell as the assembler computes them (section 4.2). */
+  struct CellBlocks
+  {
+    /** Active cell index. */
+    unsigned int                                 cell = 0;
+    std::vector<dealii::types::global_dof_index> displacement_dofs;
+    std::vector<dealii::types::global_dof_index> stress_dofs;
+    /** B_c: displacement dofs x stress dofs. */
+    dealii::FullMatrix<double> B;
+    /** F_c: stress dofs x stress dofs. */
+    dealii::FullMatrix<double> F;
+    /** The cell's share of the load vector f (empty when the blocks come
+     * from storage). */
+    dealii::Vector<double> load;
+  };
+
   /**
    * The discrete blocks of section 4.2 with the row classification: the
    * block-diagonal flexibility F (one dense SPD block per cell), the
@@ -89,11 +106,58 @@ namespace hrcontact
     dealii::SparseMatrix<double> B;
     dealii::Vector<double>       load;
 
+    /**
+     * Lean storage, for the condensed path on large meshes: B, F and the cell
+     * dofs are kept only for the cells marked here, those that touch the node
+     * of a Q or H row, which is all that p = Q s - q and the support
+     * reactions need. Every other cell's blocks are recomputed on demand by
+     * `recompute_cell_blocks`, once when the condensed stiffness is built and
+     * once for the final stresses, so the memory of the replicated blocks
+     * (about 3 KB per cell in 2D, 30 KB in 3D) is not spent. Empty: every
+     * cell is stored (the null-space path needs them all). The load vector
+     * is always complete.
+     */
+    std::vector<bool> stored_cell;
+    /** Calls the worker with the blocks of every cell the filter accepts. */
+    std::function<void(const std::function<bool(unsigned int)> &,
+                       const std::function<void(const CellBlocks &)> &)>
+      recompute_cell_blocks;
+
+    /** Number of active cells. */
+    unsigned int
+    n_cells() const
+    {
+      return cell_stress_dofs.size();
+    }
+    bool
+    is_stored(const unsigned int cell) const
+    {
+      return stored_cell.empty() || stored_cell[cell];
+    }
+    /**
+     * The blocks of every cell the filter accepts, from storage where the
+     * cell is stored and recomputed otherwise; in cell order.
+     */
+    void
+    for_each_cell_blocks(
+      const std::function<bool(unsigned int)>       &filter,
+      const std::function<void(const CellBlocks &)> &worker) const;
+
     std::vector<EquilibriumRow>        rows;
     std::vector<unsigned int>          free_rows, contact_rows, prescribed_rows;
     std::vector<std::array<double, 3>> node_coordinates;
 
-    /** (B~ s)_r for the rotated row r. */
+    /**
+     * B s - f over every cell, from storage or recomputed: the equilibrium
+     * residual of any row, for checks. A lean system evaluates every cell
+     * again on each process.
+     */
+    void
+    equilibrium_residual(const dealii::Vector<double> &s,
+                         dealii::Vector<double>       &residual) const;
+
+    /** (B~ s)_r for the rotated row r; in a lean system only for Q and H
+     * rows (the stored cells are theirs). */
     double
     row_times(const EquilibriumRow &row, const dealii::Vector<double> &s) const;
 

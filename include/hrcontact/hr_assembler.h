@@ -1,6 +1,7 @@
 #ifndef hrcontact_hr_assembler_h
 #define hrcontact_hr_assembler_h
 
+#include <hrcontact/dof_partition.h>
 #include <hrcontact/equilibrium_system.h>
 #include <hrcontact/mixed_spaces.h>
 #include <hrcontact/scene.h>
@@ -19,15 +20,37 @@ namespace hrcontact
   public:
     HRAssembler(const Scene<dim> &scene, const MixedSpaces<dim> &spaces);
 
+    /** Rows and every cell's blocks: classify_rows() and assemble_blocks(). */
     void
     assemble(EquilibriumSystem &system) const;
 
-  private:
-    void
-    assemble_blocks(EquilibriumSystem &system) const;
+    /** The C, Q and H rows, the nodes and the dimensions of the system. */
     void
     classify_rows(EquilibriumSystem &system) const;
 
+    /**
+     * B, F and the load f; needs the rows. Without `lean`, every cell's
+     * blocks are stored. With it (the condensed path), only the cells
+     * touching a Q or H row's node are (EquilibriumSystem::stored_cell), the
+     * assembler is left behind as EquilibriumSystem::recompute_cell_blocks,
+     * and each process evaluates only its own cells and the stored ones; the
+     * load is summed over the processes. The scene and the spaces must
+     * outlive the system then.
+     */
+    void
+    assemble_blocks(EquilibriumSystem  &system,
+                    const DofPartition *lean = nullptr) const;
+
+    /**
+     * Computes the blocks of every cell the filter accepts, in cell order,
+     * and hands them to the worker. Throws InputError for an inverted cell
+     * or a load that is not finite.
+     */
+    void
+    for_each_cell(const std::function<bool(unsigned int)>       &filter,
+                  const std::function<void(const CellBlocks &)> &worker) const;
+
+  private:
     const Scene<dim>       &scene;
     const MixedSpaces<dim> &spaces;
   };

@@ -195,8 +195,15 @@ namespace hrcontact
     /** Serial direct back end: the pattern and K itself. */
     dealii::SparsityPattern      sparsity;
     dealii::SparseMatrix<double> K;
-    /** F_c^{-1} B_c^T per cell (stress dofs x displacement dofs). */
+    /**
+     * The cells whose stresses every Newton step needs (the system's stored
+     * cells: those of the Q and H rows, or all), and their F_c^{-1} B_c^T
+     * (stress dofs x displacement dofs).
+     */
+    std::vector<unsigned int>               recovery_cells;
     std::vector<dealii::FullMatrix<double>> recovery;
+    /** Whether recovery_cells holds every cell. */
+    bool recovery_complete = true;
     /** u gathered on this process, and the stresses. */
     dealii::Vector<double> u, s;
     /** Trilinos back end (kept between Newton steps). */
