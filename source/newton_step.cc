@@ -124,7 +124,8 @@ namespace hrcontact
   {
     TrilinosWrappers::SparseMatrix matrix;
     TrilinosWrappers::MPI::Vector  rhs, u;
-    /** The matrix the AMG hierarchy was built from (ML keeps a pointer). */
+    /** With Reuse preconditioner: the matrix the kept AMG hierarchy was
+     * built from (ML keeps a pointer). */
     TrilinosWrappers::SparseMatrix      setup_matrix;
     TrilinosWrappers::PreconditionAMG   preconditioner;
     std::unique_ptr<Epetra_MultiVector> modes;
@@ -357,6 +358,15 @@ namespace hrcontact
     recovery_complete = true;
     for (unsigned int c = 0; c < n_cells; ++c)
       recovery_complete &= system.is_stored(c);
+    unsigned int n_owned = 0, n_stored = 0;
+    for (unsigned int c = 0; c < n_cells; ++c)
+      {
+        n_owned += partition.owned_cell[c];
+        n_stored += system.is_stored(c);
+      }
+    owned_cells.reserve(n_owned);
+    recovery_cells.reserve(n_stored);
+    recovery.reserve(n_stored);
     FullMatrix<double> Finv, R, Kc;
     system.for_each_cell_blocks(
       [&](const unsigned int c) {
@@ -373,6 +383,12 @@ namespace hrcontact
           {
             Kc.reinit(du.size(), du.size());
             b.B.mmult(Kc, R);
+            if (owned_cells.empty()) // every cell has as many dofs
+              {
+                owned_dofs.reserve(std::size_t(n_owned) * du.size());
+                owned_stiffness.reserve(std::size_t(n_owned) * du.size() *
+                                        du.size());
+              }
             owned_cells.push_back(b.cell);
             owned_dofs.insert(owned_dofs.end(), du.begin(), du.end());
             for (unsigned int i = 0; i < du.size(); ++i)
@@ -749,7 +765,12 @@ namespace hrcontact
     auto        setup = [&]() {
       Timer setup_timer;
       d.preconditioner.clear();
-      d.setup_matrix.copy_from(d.matrix);
+      // ML keeps a pointer to the matrix: a hierarchy that outlives the
+      // step needs a copy; one rebuilt every step does not.
+      if (settings.reuse_preconditioner)
+        d.setup_matrix.copy_from(d.matrix);
+      const TrilinosWrappers::SparseMatrix &M =
+        settings.reuse_preconditioner ? d.setup_matrix : d.matrix;
       // Smoothed aggregation for an elliptic operator; the near null space
       // is the rigid-body modes (ML's pre-computed null space), since the
       // translations alone (deal.II 9.4's constant modes) coarsen bending
@@ -761,10 +782,10 @@ namespace hrcontact
       data.aggregation_threshold = settings.aggregation_threshold;
       Teuchos::ParameterList              list;
       std::unique_ptr<Epetra_MultiVector> unused;
-      data.set_parameters(list, unused, d.setup_matrix);
+      data.set_parameters(list, unused, M);
       const unsigned int dim     = system.dim;
       const unsigned int n_modes = (dim == 2) ? 3 : 6;
-      const auto        &map = d.setup_matrix.trilinos_matrix().DomainMap();
+      const auto        &map     = M.trilinos_matrix().DomainMap();
       d.modes = std::make_unique<Epetra_MultiVector>(map, n_modes);
       for (int k = 0; k < map.NumMyElements(); ++k)
         {
@@ -788,7 +809,7 @@ namespace hrcontact
       list.set("null space: dimension", static_cast<int>(n_modes));
       list.set("null space: vectors", d.modes->Values());
       list.set("null space: add default vectors", false);
-      d.preconditioner.initialize(d.setup_matrix, list);
+      d.preconditioner.initialize(M, list);
       d.built = true;
       ++statistics.preconditioner_setups;
       statistics.setup_seconds += setup_timer.wall_time();
