@@ -34,6 +34,16 @@ compare_contact(const std::string &scene, const std::string &extra)
     << "\n  same released set at every update: " << (c.same_sets ? "yes" : "NO")
     << "\n  max |p_null - p_condensed| / max |p| over all updates < 1e-9: "
     << hrcontact_tests::check(c.p_difference, 1e-9) << std::endl;
+  // The condensed path keeps the blocks of the contact and support cells
+  // only (a lean system); the null-space path keeps them all.
+  auto stored = [](const hrcontact::EquilibriumSystem &sys) {
+    unsigned int n = 0;
+    for (unsigned int cell = 0; cell < sys.n_cells(); ++cell)
+      n += sys.is_stored(cell);
+    return n;
+  };
+  std::cout << "  cells with stored blocks: " << stored(a->system) << " and "
+            << stored(b->system) << " of " << a->system.n_cells() << std::endl;
 }
 
 int
