@@ -317,6 +317,21 @@ namespace hrcontact
       "moves.";
   }
 
+  namespace
+  {
+    /** R = F_c^{-1} B_c^T, which gives the cell's stresses s_c = R u_c. */
+    void
+    stress_recovery(const CellBlocks   &b,
+                    FullMatrix<double> &Finv,
+                    FullMatrix<double> &R)
+    {
+      Finv.reinit(b.stress_dofs.size(), b.stress_dofs.size());
+      Finv.invert(b.F);
+      R.reinit(b.stress_dofs.size(), b.displacement_dofs.size());
+      Finv.mTmult(R, b.B);
+    }
+  } // namespace
+
   CondensedStep::~CondensedStep() = default;
 
   CondensedStep::CondensedStep(const EquilibriumSystem    &system,
@@ -374,11 +389,7 @@ namespace hrcontact
       },
       [&](const CellBlocks &b) {
         const auto &du = b.displacement_dofs;
-        const auto &ds = b.stress_dofs;
-        Finv.reinit(ds.size(), ds.size());
-        Finv.invert(b.F);
-        R.reinit(ds.size(), du.size());
-        Finv.mTmult(R, b.B); // F^{-1} B^T
+        stress_recovery(b, Finv, R);
         if (partition.owned_cell[b.cell])
           {
             Kc.reinit(du.size(), du.size());
@@ -888,10 +899,7 @@ namespace hrcontact
       [&](const CellBlocks &b) {
         const auto &du = b.displacement_dofs;
         const auto &ds = b.stress_dofs;
-        Finv.reinit(ds.size(), ds.size());
-        Finv.invert(b.F);
-        R.reinit(ds.size(), du.size());
-        Finv.mTmult(R, b.B);
+        stress_recovery(b, Finv, R);
         for (unsigned int i = 0; i < ds.size(); ++i)
           {
             double sum = 0;
