@@ -134,9 +134,9 @@ namespace hrcontact
     /** Rigid-body modes per dof: component and node coordinates. */
     std::vector<unsigned int>          component;
     std::vector<std::array<double, 3>> point;
-    /** The cells this process owns, their displacement dofs and K_c, one
-     * after the other (n_u and n_u x n_u numbers per cell). */
-    std::vector<unsigned int>            cells;
+    /** The displacement dofs and K_c of the cells this process owns, one
+     * cell after the other (dofs_per_cell and its square numbers each). */
+    unsigned int                         dofs_per_cell = 0;
     std::vector<types::global_dof_index> cell_dofs;
     std::vector<double>                  cell_stiffness;
   };
@@ -315,10 +315,7 @@ namespace hrcontact
       "body, or a stress space too poor for the mesh). The null-space path "
       "(Equilibrium reduction/Path = null-space) names the nodes the mode "
       "moves.";
-  }
 
-  namespace
-  {
     /** R = F_c^{-1} B_c^T, which gives the cell's stresses s_c = R u_c. */
     void
     stress_recovery(const CellBlocks   &b,
@@ -370,15 +367,13 @@ namespace hrcontact
     std::vector<unsigned int>            owned_cells;
     std::vector<types::global_dof_index> owned_dofs;
     std::vector<double>                  owned_stiffness;
-    recovery_complete = true;
-    for (unsigned int c = 0; c < n_cells; ++c)
-      recovery_complete &= system.is_stored(c);
-    unsigned int n_owned = 0, n_stored = 0;
+    unsigned int                         n_owned = 0, n_stored = 0;
     for (unsigned int c = 0; c < n_cells; ++c)
       {
         n_owned += partition.owned_cell[c];
         n_stored += system.is_stored(c);
       }
+    recovery_complete = (n_stored == n_cells);
     owned_cells.reserve(n_owned);
     recovery_cells.reserve(n_stored);
     recovery.reserve(n_stored);
@@ -438,7 +433,7 @@ namespace hrcontact
                                    partition.communicator);
         distributed->rhs.reinit(partition.owned, partition.communicator);
         distributed->u.reinit(partition.owned, partition.communicator);
-        distributed->cells          = std::move(owned_cells);
+        distributed->dofs_per_cell  = n_per_cell;
         distributed->cell_dofs      = std::move(owned_dofs);
         distributed->cell_stiffness = std::move(owned_stiffness);
       }
@@ -633,13 +628,14 @@ namespace hrcontact
         A         = 0;
         rhs       = 0;
         // Loads enter per dof below; the cells bring stiffness only.
-        const auto        &d = *distributed;
-        const unsigned int n_per_cell =
-          d.cells.empty() ? 0 : d.cell_dofs.size() / d.cells.size();
+        const auto        &d          = *distributed;
+        const unsigned int n_per_cell = d.dofs_per_cell;
+        const std::size_t  n_owned_cells =
+          (n_per_cell == 0) ? 0 : d.cell_dofs.size() / n_per_cell;
         Vector<double>                       no_cell_force(n_per_cell);
         FullMatrix<double>                   Kc(n_per_cell, n_per_cell);
         std::vector<types::global_dof_index> du(n_per_cell);
-        for (unsigned int k = 0; k < d.cells.size(); ++k)
+        for (std::size_t k = 0; k < n_owned_cells; ++k)
           {
             const std::size_t first = std::size_t(k) * n_per_cell;
             std::copy(d.cell_dofs.begin() + first,
