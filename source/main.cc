@@ -3,7 +3,7 @@
 //   hrcontact --print-parameters
 #include <deal.II/base/mpi.h>
 
-#include <hrcontact/run.h>
+#include <hrcontact/core/run.h>
 
 #include <cstring>
 #include <iostream>

@@ -7,7 +7,7 @@
 // The stops carry the seismic load H = a_h gamma L h, and the two paths give
 // the same reactions.
 
-#include <hrcontact/constraint_law.h>
+#include <hrcontact/constraints/constraint_law.h>
 
 #include <map>
 

@@ -11,7 +11,7 @@
 // - Sections off the column middles and a section through a mesh line
 //   (counted once, not twice) keep N within the same bounds.
 
-#include <hrcontact/section_forces.h>
+#include <hrcontact/postprocess/section_forces.h>
 
 #include "tests.h"
 

@@ -16,10 +16,10 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 
-#include <hrcontact/augmented_lagrangian_solver.h>
-#include <hrcontact/constraint_law.h>
-#include <hrcontact/equilibrium_reduction.h>
-#include <hrcontact/newton_step.h>
+#include <hrcontact/constraints/constraint_law.h>
+#include <hrcontact/solvers/augmented_lagrangian_solver.h>
+#include <hrcontact/solvers/equilibrium_reduction.h>
+#include <hrcontact/solvers/newton_step.h>
 
 #include <cmath>
 #include <iomanip>

@@ -5,8 +5,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <hrcontact/hr_problem.h>
-#include <hrcontact/run.h>
+#include <hrcontact/core/hr_problem.h>
+#include <hrcontact/core/run.h>
 
 #include <algorithm>
 #include <cmath>

@@ -10,7 +10,7 @@
 // - the pressed zones along the extrados: same number at both meshes, each
 //   end within 1.5 coarse node spacings.
 
-#include <hrcontact/tunnel_lining.h>
+#include <hrcontact/geometry/tunnel_lining.h>
 
 #include "tests.h"
 

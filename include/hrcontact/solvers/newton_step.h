@@ -9,10 +9,10 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
-#include <hrcontact/constraint_law.h>
-#include <hrcontact/dof_partition.h>
-#include <hrcontact/equilibrium_reduction.h>
-#include <hrcontact/equilibrium_system.h>
+#include <hrcontact/constraints/constraint_law.h>
+#include <hrcontact/discretisation/dof_partition.h>
+#include <hrcontact/discretisation/equilibrium_system.h>
+#include <hrcontact/solvers/equilibrium_reduction.h>
 
 #include <memory>
 #include <string>

@@ -2,7 +2,7 @@
 
 #include <deal.II/fe/mapping_q1.h>
 
-#include <hrcontact/section_forces.h>
+#include <hrcontact/postprocess/section_forces.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
-#include <hrcontact/equilibrium_system.h>
+#include <hrcontact/discretisation/equilibrium_system.h>
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 #include <deal.II/fe/fe_dgq.h>
 #include <deal.II/fe/fe_q.h>
 
-#include <hrcontact/input.h>
-#include <hrcontact/mixed_spaces.h>
+#include <hrcontact/core/input.h>
+#include <hrcontact/discretisation/mixed_spaces.h>
 
 namespace hrcontact
 {

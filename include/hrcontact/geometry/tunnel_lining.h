@@ -6,7 +6,7 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <hrcontact/input.h>
+#include <hrcontact/core/input.h>
 
 #include <string>
 #include <vector>

@@ -10,7 +10,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hrcontact/postprocessor.h>
+#include <hrcontact/postprocess/postprocessor.h>
 
 #include <cmath>
 #include <cstdio>

@@ -8,8 +8,8 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 
-#include <hrcontact/constraint_law.h>
-#include <hrcontact/hr_assembler.h>
+#include <hrcontact/constraints/constraint_law.h>
+#include <hrcontact/discretisation/hr_assembler.h>
 
 #include <algorithm>
 #include <cmath>

@@ -7,10 +7,10 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <hrcontact/dof_partition.h>
-#include <hrcontact/equilibrium_system.h>
-#include <hrcontact/mixed_spaces.h>
-#include <hrcontact/scene.h>
+#include <hrcontact/core/scene.h>
+#include <hrcontact/discretisation/dof_partition.h>
+#include <hrcontact/discretisation/equilibrium_system.h>
+#include <hrcontact/discretisation/mixed_spaces.h>
 
 #include <memory>
 #include <ostream>

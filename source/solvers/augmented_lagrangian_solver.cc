@@ -1,7 +1,7 @@
 #include <deal.II/base/timer.h>
 
-#include <hrcontact/augmented_lagrangian_solver.h>
-#include <hrcontact/input.h>
+#include <hrcontact/core/input.h>
+#include <hrcontact/solvers/augmented_lagrangian_solver.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
-#include <hrcontact/hr_problem.h>
-#include <hrcontact/input.h>
-#include <hrcontact/run.h>
+#include <hrcontact/core/hr_problem.h>
+#include <hrcontact/core/input.h>
+#include <hrcontact/core/run.h>
 
 #include <filesystem>
 #include <fstream>

@@ -5,7 +5,7 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <hrcontact/equilibrium_system.h>
+#include <hrcontact/discretisation/equilibrium_system.h>
 
 #include <ostream>
 #include <vector>

@@ -6,8 +6,8 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <hrcontact/mixed_spaces.h>
-#include <hrcontact/tunnel_lining.h>
+#include <hrcontact/discretisation/mixed_spaces.h>
+#include <hrcontact/geometry/tunnel_lining.h>
 
 #include <vector>
 

@@ -1,5 +1,5 @@
-#include <hrcontact/constraint_law.h>
-#include <hrcontact/input.h>
+#include <hrcontact/constraints/constraint_law.h>
+#include <hrcontact/core/input.h>
 
 #include <algorithm>
 #include <cmath>

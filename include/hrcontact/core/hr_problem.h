@@ -6,13 +6,13 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <hrcontact/augmented_lagrangian_solver.h>
-#include <hrcontact/equilibrium_reduction.h>
-#include <hrcontact/equilibrium_system.h>
-#include <hrcontact/mixed_spaces.h>
-#include <hrcontact/newton_step.h>
-#include <hrcontact/postprocessor.h>
-#include <hrcontact/scene.h>
+#include <hrcontact/core/scene.h>
+#include <hrcontact/discretisation/equilibrium_system.h>
+#include <hrcontact/discretisation/mixed_spaces.h>
+#include <hrcontact/postprocess/postprocessor.h>
+#include <hrcontact/solvers/augmented_lagrangian_solver.h>
+#include <hrcontact/solvers/equilibrium_reduction.h>
+#include <hrcontact/solvers/newton_step.h>
 
 #include <functional>
 #include <ostream>

@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
-#include <hrcontact/equilibrium_reduction.h>
-#include <hrcontact/input.h>
+#include <hrcontact/core/input.h>
+#include <hrcontact/solvers/equilibrium_reduction.h>
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 
 #include <deal.II/distributed/tria.h>
 
-#include <hrcontact/dof_partition.h>
-#include <hrcontact/input.h>
+#include <hrcontact/core/input.h>
+#include <hrcontact/discretisation/dof_partition.h>
 
 #include <algorithm>
 

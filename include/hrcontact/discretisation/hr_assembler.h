@@ -1,10 +1,10 @@
 #ifndef hrcontact_hr_assembler_h
 #define hrcontact_hr_assembler_h
 
-#include <hrcontact/dof_partition.h>
-#include <hrcontact/equilibrium_system.h>
-#include <hrcontact/mixed_spaces.h>
-#include <hrcontact/scene.h>
+#include <hrcontact/core/scene.h>
+#include <hrcontact/discretisation/dof_partition.h>
+#include <hrcontact/discretisation/equilibrium_system.h>
+#include <hrcontact/discretisation/mixed_spaces.h>
 
 namespace hrcontact
 {

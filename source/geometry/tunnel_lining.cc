@@ -2,7 +2,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
 
-#include <hrcontact/tunnel_lining.h>
+#include <hrcontact/geometry/tunnel_lining.h>
 
 #include <cmath>
 #include <iomanip>

@@ -4,7 +4,7 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <hrcontact/input.h>
+#include <hrcontact/core/input.h>
 
 #include <cmath>
 #include <iostream>

@@ -1,5 +1,5 @@
-#include <hrcontact/hr_problem.h>
-#include <hrcontact/section_forces.h>
+#include <hrcontact/core/hr_problem.h>
+#include <hrcontact/postprocess/section_forces.h>
 
 #include <algorithm>
 #include <cmath>

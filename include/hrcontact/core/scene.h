@@ -7,8 +7,8 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <hrcontact/input.h>
-#include <hrcontact/tunnel_lining.h>
+#include <hrcontact/core/input.h>
+#include <hrcontact/geometry/tunnel_lining.h>
 
 #include <map>
 #include <memory>

@@ -4,7 +4,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
-#include <hrcontact/scene.h>
+#include <hrcontact/core/scene.h>
 
 #include <cmath>
 #include <sstream>

@@ -1,9 +1,9 @@
 #include <deal.II/base/utilities.h>
 
-#include <hrcontact/constraint_law.h>
-#include <hrcontact/hr_assembler.h>
-#include <hrcontact/hr_problem.h>
-#include <hrcontact/newton_step.h>
+#include <hrcontact/constraints/constraint_law.h>
+#include <hrcontact/core/hr_problem.h>
+#include <hrcontact/discretisation/hr_assembler.h>
+#include <hrcontact/solvers/newton_step.h>
 
 #include <algorithm>
 #include <chrono>

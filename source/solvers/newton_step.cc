@@ -12,8 +12,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <hrcontact/input.h>
-#include <hrcontact/newton_step.h>
+#include <hrcontact/core/input.h>
+#include <hrcontact/solvers/newton_step.h>
 
 #include <cmath>
 #include <map>

@@ -6,10 +6,10 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <hrcontact/constraint_law.h>
-#include <hrcontact/equilibrium_system.h>
-#include <hrcontact/input.h>
-#include <hrcontact/newton_step.h>
+#include <hrcontact/constraints/constraint_law.h>
+#include <hrcontact/core/input.h>
+#include <hrcontact/discretisation/equilibrium_system.h>
+#include <hrcontact/solvers/newton_step.h>
 
 #include <functional>
 #include <ostream>
