@@ -2,7 +2,8 @@
 # Run every scene of parameters/ with two builds of hrcontact and require
 # identical result files, to the last printed digit: a restructuring must not
 # change a number. Timings (wall_time, *seconds*, peak_memory_MB, the seconds
-# column of history.csv) are the only lines allowed to differ.
+# column of history.csv, timed log lines) and the date in the .vtu header are
+# the only lines allowed to differ.
 #   bash scripts/compare-builds.sh OLD_EXECUTABLE [NEW_EXECUTABLE] [SCENE ...]
 # NEW_EXECUTABLE defaults to build/hrcontact. Build the old one from another
 # checkout, e.g. `git worktree add /tmp/old main && cmake -S /tmp/old -B
@@ -23,36 +24,40 @@ normalise() {
   case "$(basename "$f")" in
     summary.txt) grep -v -E '^(wall_time|peak_memory_MB|[a-z_]*seconds[a-z_]*) =' "$f" ;;
     history.csv) sed 's/,[^,]*$//' "$f" ;;
+    *.vtu | *.pvtu) grep -v '^#This file was generated' "$f" ;;
     *) cat "$f" ;;
   esac
 }
 printf "%-22s %s\n" scene verdict
 for scene in "${scenes[@]}"; do
   for run in old new; do
+    # The same file name and a relative output directory, so that the logs
+    # of the two runs can be compared line by line.
     mkdir -p "$work/$scene/$run"
-    cat > "$work/$scene/$run.prm" <<PRM
+    cat > "$work/$scene/$run/$scene.prm" <<PRM
 include $root/parameters/$scene.prm
 subsection Output
-  set Output directory = $work/$scene/$run
+  set Output directory = results
   set Print timing = false
 end
 PRM
     exe=$old
     [ $run = new ] && exe=$new
-    (cd "$work/$scene" && "$exe" "$work/$scene/$run.prm" > "$run.log" 2>&1)
+    (cd "$work/$scene/$run" && "$exe" "$scene.prm" > ../$run.log 2>&1)
     echo $? > "$work/$scene/$run.rc"
   done
   verdict="same"
   if [ "$(cat "$work/$scene/old.rc")" != "$(cat "$work/$scene/new.rc")" ]; then
     verdict="DIFFERENT exit codes"
   else
-    a=$(cd "$work/$scene/old" && find . -type f | sort)
-    b=$(cd "$work/$scene/new" && find . -type f | sort)
+    a=$(cd "$work/$scene/old/results" && find . -type f | sort)
+    b=$(cd "$work/$scene/new/results" && find . -type f | sort)
     if [ "$a" != "$b" ]; then
       verdict="DIFFERENT files"
     else
       for f in $a; do
-        if ! cmp -s <(normalise "$work/$scene/old/$f") <(normalise "$work/$scene/new/$f"); then
+        if ! cmp -s <(normalise "$work/$scene/old/results/$f") \
+          <(normalise "$work/$scene/new/results/$f"); then
           verdict="DIFFERENT: $f"
           break
         fi

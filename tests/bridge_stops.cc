@@ -24,8 +24,8 @@ run(const std::string &title, const std::string &extra)
     extra +
     "subsection Output\n  set Write solution = false\n  set Print timing = "
     "false\n  set Output directory = results\nend\n");
-  const auto  &solver    = problem->contact_solver;
-  const auto  &system    = problem->system;
+  const auto  &solver    = (*problem->results().contact);
+  const auto  &system    = problem->results().system;
   const double tolerance = solver.tolerance_used;
 
   std::map<std::string, unsigned int> count;
@@ -39,8 +39,8 @@ run(const std::string &title, const std::string &extra)
         continue;
       double w = 0;
       for (const auto &[dof, c] : row.combination)
-        w += c * problem->displacement[dof];
-      const double p = problem->contact_reactions[k];
+        w += c * problem->results().displacement[dof];
+      const double p = problem->results().contact_reactions[k];
       reactions.push_back(p);
       sum_x += p * row.combination[0].second;
       const unsigned int branch = solver.pieces[k].branch;
@@ -69,10 +69,10 @@ run(const std::string &title, const std::string &extra)
       worst_law = std::max(worst_law, violation);
     }
   const double H = 0.5 * 25e3 * 30 * 2;
-  std::cout << title << ": converged " << (solver.converged ? "yes" : "NO")
+  std::cout << title << ": converged " << (solver.converged() ? "yes" : "NO")
             << ", updates " << solver.history.size() << ", Newton steps "
             << solver.total_newton_steps << std::endl;
-  if (solver.periodic)
+  if ((solver.outcome == hrcontact::SolveOutcome::periodic))
     {
       std::cout << "  stopped: the diagonal scheme is periodic" << std::endl;
       return {};

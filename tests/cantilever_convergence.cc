@@ -19,22 +19,20 @@ main()
   for (unsigned int r = 0; r < 4; ++r)
     {
       auto problem = hrcontact_tests::solve_from_text<2>(
-        base + "subsection Geometry\n  set Global refinements = " +
-        std::to_string(r) + "\nend\n");
-      hrcontact::Summary summary;
+        base +
+        "subsection Geometry\n  set Global refinements = " + std::to_string(r) +
+        "\nend\nsubsection Output\n  set Write solution = false\n"
+        "  set Output directory = results\nend\n");
       std::ostringstream quiet;
-      problem->postprocessor.evaluate(problem->spaces,
-                                      problem->scene,
-                                      problem->displacement,
-                                      problem->stress,
-                                      summary,
-                                      quiet);
+      problem->output_results(quiet);
+      const hrcontact::Summary &summary = problem->results().summary;
       const double tip = summary.get_double("probe.tip_deflection") /
                          summary.get_double("reference.tip_deflection");
       const double root = summary.get_double("probe.root_stress") /
                           summary.get_double("reference.root_stress");
       const double err = summary.get_double("stress_error_l2");
-      std::cout << std::setw(5) << problem->triangulation.n_active_cells()
+      std::cout << std::setw(5)
+                << problem->results().triangulation().n_active_cells()
                 << std::fixed << std::setprecision(5) << std::setw(11) << tip
                 << std::setw(12) << root << std::setw(14)
                 << std::setprecision(5) << err;

@@ -15,10 +15,12 @@ run(const std::string &name, const std::string &extra)
     "false\n  set Output directory = results\nend\n");
   std::ostringstream quiet;
   problem->output_results(quiet);
-  std::cout << name << ": converged = " << problem->summary.get("converged")
-            << ", total load y = " << problem->summary.get("total_load_y")
+  std::cout << name
+            << ": converged = " << problem->results().summary.get("converged")
+            << ", total load y = "
+            << problem->results().summary.get("total_load_y")
             << ", total reaction y = "
-            << problem->summary.get("total_reaction_y") << std::endl;
+            << problem->results().summary.get("total_reaction_y") << std::endl;
   hrcontact_tests::print_kkt(*problem);
 }
 

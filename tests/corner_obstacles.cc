@@ -34,8 +34,8 @@ run(const double theta, const double q_x, const std::string &path)
     extra.str());
   std::ostringstream quiet;
   problem->output_results(quiet);
-  const auto &system = problem->system;
-  const auto &solver = problem->contact_solver;
+  const auto &system = problem->results().system;
+  const auto &solver = (*problem->results().contact);
 
   // Reactions against -(pressure) x (tributary length) on each wall.
   std::map<int, std::vector<std::pair<double, unsigned int>>> walls;
@@ -60,8 +60,9 @@ run(const double theta, const double q_x, const std::string &path)
           const double exact = -pressure * 0.5 * (left + right);
           worst_reaction =
             std::max(worst_reaction,
-                     std::abs(problem->contact_reactions[nodes[j].second] -
-                              exact) /
+                     std::abs(
+                       problem->results().contact_reactions[nodes[j].second] -
+                       exact) /
                        (pressure * 0.125));
           corner_rows += (nodes[j].first == 0);
         }
@@ -76,15 +77,15 @@ run(const double theta, const double q_x, const std::string &path)
       {
         seen[row.node] = true;
         const auto &x  = system.node_coordinates[row.node];
-        worst_u =
-          std::max({worst_u,
-                    std::abs(problem->displacement[row.combination[0].first] -
-                             eps_xx * x[0]),
-                    std::abs(problem->displacement[row.combination[1].first] -
-                             eps_yy * x[1])});
+        worst_u        = std::max(
+          {worst_u,
+                  std::abs(problem->results().displacement[row.combination[0].first] -
+                    eps_xx * x[0]),
+                  std::abs(problem->results().displacement[row.combination[1].first] -
+                    eps_yy * x[1])});
       }
   std::cout << "theta = " << theta << ", " << path << ": converged "
-            << (solver.converged ? "yes" : "NO") << ", " << corner_rows
+            << (solver.converged() ? "yes" : "NO") << ", " << corner_rows
             << " constraints at the corner node, " << system.contact_rows.size()
             << " in all" << std::endl;
   std::cout << "  reactions match the exact wall pressure "
@@ -93,8 +94,8 @@ run(const double theta, const double q_x, const std::string &path)
             << (worst_u < 1e-8 * std::abs(eps_xx) ? "to 1e-8" : "NOT")
             << std::endl;
   std::cout << "  equilibrium imbalance "
-            << (std::stod(problem->summary.get("equilibrium_imbalance")) <
-                    1e-10 ?
+            << (std::stod(problem->results().summary.get(
+                  "equilibrium_imbalance")) < 1e-10 ?
                   "below 1e-10" :
                   "TOO LARGE")
             << std::endl;
@@ -121,35 +122,38 @@ run_tilted()
         "Print timing = false\n  set Output directory = results\nend\n");
       std::ostringstream quiet;
       problem->output_results(quiet);
-      const auto  &solver      = problem->contact_solver;
+      const auto  &solver      = (*problem->results().contact);
       unsigned int corner_open = 0;
       for (unsigned int k = 0; k < solver.released.size(); ++k)
         corner_open +=
           solver.released[k] &&
-          problem->system.node_coordinates
-              [problem->system.rows[problem->system.contact_rows[k]].node][0] ==
-            0 &&
-          problem->system.node_coordinates
-              [problem->system.rows[problem->system.contact_rows[k]].node][1] ==
-            0;
+          problem->results().system.node_coordinates
+              [problem->results()
+                 .system.rows[problem->results().system.contact_rows[k]]
+                 .node][0] == 0 &&
+          problem->results().system.node_coordinates
+              [problem->results()
+                 .system.rows[problem->results().system.contact_rows[k]]
+                 .node][1] == 0;
       const double tolerance = solver.tolerance_used;
       std::cout << "tilted, " << path << ": converged "
-                << (solver.converged ? "yes" : "NO") << ", updates "
+                << (solver.converged() ? "yes" : "NO") << ", updates "
                 << solver.history.size() << ", Newton steps "
                 << solver.total_newton_steps << ", pressed "
-                << problem->summary.get("pressed_constraints")
+                << problem->results().summary.get("pressed_constraints")
                 << ", corner constraints open " << corner_open << std::endl;
       std::cout << "  no tension beyond the tolerance: "
-                << (std::stod(problem->summary.get("max_positive_p_n")) <
-                        10 * tolerance ?
+                << (std::stod(problem->results().summary.get(
+                      "max_positive_p_n")) < 10 * tolerance ?
                       "yes" :
                       "NO")
                 << ", no penetration: "
-                << (std::stod(problem->summary.get("max_penetration")) < 1e-12 ?
+                << (std::stod(problem->results().summary.get(
+                      "max_penetration")) < 1e-12 ?
                       "yes" :
                       "NO")
                 << std::endl;
-      reactions.push_back(problem->contact_reactions);
+      reactions.push_back(problem->results().contact_reactions);
     }
   double difference = 0, scale = 0;
   for (unsigned int k = 0; k < reactions[0].size(); ++k)

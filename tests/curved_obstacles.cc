@@ -32,12 +32,12 @@ run(const std::string &contact)
     "subsection Contact\n" + contact +
     "end\nsubsection Output\n  set Write solution = false\n  set Print "
     "timing = false\n  set Output directory = results\nend\n");
-  const auto &system = problem->system;
-  const auto &solver = problem->contact_solver;
+  const auto &system = problem->results().system;
+  const auto &solver = (*problem->results().contact);
   Result      result;
-  result.converged = solver.converged;
+  result.converged = solver.converged();
   result.updates   = solver.history.size();
-  result.reactions = problem->contact_reactions;
+  result.reactions = problem->results().contact_reactions;
   // Top nodes by x: total force (full model = twice the half), the last
   // node in contact and the first open one, the pressure at the centre.
   std::vector<std::pair<double, unsigned int>> nodes;
@@ -46,8 +46,8 @@ run(const std::string &contact)
       const EquilibriumRow &row = system.rows[system.contact_rows[k]];
       const double          x   = system.node_coordinates[row.node][0];
       nodes.emplace_back(x, k);
-      result.P -=
-        2 * problem->contact_reactions[k] * row.direction_component(1);
+      result.P -= 2 * problem->results().contact_reactions[k] *
+                  row.direction_component(1);
       result.worst_gap =
         std::max(result.worst_gap,
                  std::abs(row.value - (std::sqrt(x * x + 1.) - 1.)));
@@ -58,7 +58,8 @@ run(const std::string &contact)
     if (!solver.released[nodes[j].second] &&
         solver.released[nodes[j + 1].second])
       result.a = 0.5 * (nodes[j].first + nodes[j + 1].first);
-  result.p0 = -problem->contact_reactions[nodes[0].second] / (0.5 * result.h);
+  result.p0 =
+    -problem->results().contact_reactions[nodes[0].second] / (0.5 * result.h);
   return result;
 }
 

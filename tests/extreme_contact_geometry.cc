@@ -42,11 +42,11 @@ statics(const hrcontact::HRProblem<2> &problem,
         double                        &tension)
 {
   p_max = force = moment = tension = 0;
-  const auto &sys                  = problem.system;
+  const auto &sys                  = problem.results().system;
   for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
     {
       const auto  &row = sys.rows[sys.contact_rows[k]];
-      const double p   = problem.contact_reactions[k];
+      const double p   = problem.results().contact_reactions[k];
       // The reaction on the body is p n (n = (0, -1) here).
       const double fy = p * row.combination[1].second;
       force += fy;
@@ -74,9 +74,9 @@ main(int argc, char **argv)
     double p_max, force, moment, tension;
     statics(*problem, p_max, force, moment, tension);
     std::cout << "aspect ratio 1:1000 ("
-              << problem->triangulation.n_active_cells()
+              << problem->results().triangulation().n_active_cells()
               << " cells): converged: "
-              << (problem->contact_solver.converged ? "yes" : "NO")
+              << (problem->results().converged() ? "yes" : "NO")
               << "; force balance (1e-8): "
               << hrcontact_tests::check(std::abs(force - load) / load, 1e-8)
               << "; moment balance (1e-8): "
@@ -90,7 +90,7 @@ main(int argc, char **argv)
     auto problem = hrcontact_tests::solve_from_text<2>(
       scene("lift-off") +
       "subsection Loads\n  set Tractions = 3: 0; -q\nend\n" + quiet);
-    const auto  &al      = problem->contact_solver;
+    const auto  &al      = (*problem->results().contact);
     unsigned int pressed = 0;
     for (const bool r : al.released)
       pressed += !r;
@@ -111,20 +111,21 @@ main(int argc, char **argv)
     auto above     = hrcontact_tests::solve_from_text<2>(
       cantilever + "subsection Contact\n  set Obstacles = 2: 0, -1.5 : 0, "
                        "-1\nend\n");
-    const auto  &al    = above->contact_solver;
+    const auto  &al    = (*above->results().contact);
     unsigned int open  = 0;
     double       p_max = 0, u_max = 0, u_diff = 0;
     for (unsigned int k = 0; k < al.released.size(); ++k)
       {
         open += al.released[k];
-        p_max = std::max(p_max, std::abs(above->contact_reactions[k]));
+        p_max =
+          std::max(p_max, std::abs(above->results().contact_reactions[k]));
       }
-    for (unsigned int i = 0; i < free_beam->displacement.size(); ++i)
+    for (unsigned int i = 0; i < free_beam->results().displacement.size(); ++i)
       {
-        u_max  = std::max(u_max, std::abs(free_beam->displacement[i]));
+        u_max = std::max(u_max, std::abs(free_beam->results().displacement[i]));
         u_diff = std::max(u_diff,
-                          std::abs(free_beam->displacement[i] -
-                                   above->displacement[i]));
+                          std::abs(free_beam->results().displacement[i] -
+                                   above->results().displacement[i]));
       }
     std::cout << "nothing touches: " << open << " of " << al.released.size()
               << " open after " << al.history.size()
@@ -210,12 +211,14 @@ main(int argc, char **argv)
       "  set Initial penalty = 1e4\nend\n"
       "subsection Linear solver\n  set Solver = cg-amg\nend\n" +
       quiet);
-    const auto &al = problem->contact_solver;
+    const auto &al = (*problem->results().contact);
     std::cout << "displacement AL, diagonal, CG + AMG (Hertz, 768 cells): "
-              << (al.converged        ? "converged" :
-                  al.roundoff_limited ? "stopped at its noise floor" :
-                  al.diverged         ? "stopped by the divergence guard" :
-                                        "NOT converged")
+              << (al.converged() ? "converged" :
+                  (al.outcome == hrcontact::SolveOutcome::roundoff_limited) ?
+                                   "stopped at its noise floor" :
+                  (al.outcome == hrcontact::SolveOutcome::diverged) ?
+                                   "stopped by the divergence guard" :
+                                   "NOT converged")
               << std::endl;
   }
   {
@@ -226,16 +229,18 @@ main(int argc, char **argv)
       "subsection Augmented Lagrangian\n  set Relative tolerance = 1e-14\nend\n" +
       quiet);
     double p_max = 0, diff = 0;
-    for (unsigned int k = 0; k < reference->contact_reactions.size(); ++k)
+    for (unsigned int k = 0; k < reference->results().contact_reactions.size();
+         ++k)
       {
-        p_max = std::max(p_max, std::abs(reference->contact_reactions[k]));
-        diff  = std::max(diff,
-                        std::abs(reference->contact_reactions[k] -
-                                 tight->contact_reactions[k]));
+        p_max =
+          std::max(p_max, std::abs(reference->results().contact_reactions[k]));
+        diff = std::max(diff,
+                        std::abs(reference->results().contact_reactions[k] -
+                                 tight->results().contact_reactions[k]));
       }
     std::cout << "tolerance 1e-14: converged: "
-              << (tight->contact_solver.converged ? "yes" : "NO") << " after "
-              << tight->contact_solver.history.size()
+              << (tight->results().converged() ? "yes" : "NO") << " after "
+              << (*tight->results().contact).history.size()
               << " updates; reactions as at 1e-10 (1e-9): "
               << hrcontact_tests::check(diff / p_max, 1e-9) << std::endl;
   }

@@ -26,37 +26,46 @@ main()
 {
   const auto reference = run(1e4);
   double     p_scale   = 0;
-  for (const double p : reference->contact_reactions)
+  for (const double p : reference->results().contact_reactions)
     p_scale = std::max(p_scale, std::abs(p));
   for (const double factor : {1e-12, 1e-3, 1., 1e12})
     {
       const auto &problem = run(factor);
-      const auto &al      = problem->contact_solver;
+      const auto &al      = (*problem->results().contact);
       double      p_error = 0;
       bool        finite  = true;
-      for (unsigned int k = 0; k < problem->contact_reactions.size(); ++k)
+      for (unsigned int k = 0; k < problem->results().contact_reactions.size();
+           ++k)
         {
-          finite &= std::isfinite(problem->contact_reactions[k]);
-          p_error = std::max(p_error,
-                             std::abs(problem->contact_reactions[k] -
-                                      reference->contact_reactions[k]));
+          finite &= std::isfinite(problem->results().contact_reactions[k]);
+          p_error =
+            std::max(p_error,
+                     std::abs(problem->results().contact_reactions[k] -
+                              reference->results().contact_reactions[k]));
         }
       std::cout << "alpha_0 = " << factor << " x c_h: "
-                << (al.converged ? "converged" :
-                    al.diverged  ? "stopped by the divergence guard" :
-                    al.cycled    ? "stopped: the inner Newton cycles" :
-                                   "NOT converged")
+                << (al.converged() ? "converged" :
+                    (al.outcome == hrcontact::SolveOutcome::diverged) ?
+                                     "stopped by the divergence guard" :
+                    (al.outcome == hrcontact::SolveOutcome::inner_cycle ||
+                     al.outcome == hrcontact::SolveOutcome::periodic) ?
+                                     "stopped: the inner Newton cycles" :
+                                     "NOT converged")
                 << " after " << al.history.size()
                 << " updates; reactions finite: " << (finite ? "yes" : "NO");
       if (factor < 1e6)
         std::cout << "; converged with the reference reactions (1e-7): "
-                  << (al.converged ?
+                  << (al.converged() ?
                         hrcontact_tests::check(p_error / p_scale, 1e-7) :
                         std::string("NO"));
       else
         std::cout << "; stopped, not converged: "
-                  << ((al.diverged || al.cycled) && !al.converged ? "yes" :
-                                                                    "NO");
+                  << (((al.outcome == hrcontact::SolveOutcome::diverged) ||
+                       (al.outcome == hrcontact::SolveOutcome::inner_cycle ||
+                        al.outcome == hrcontact::SolveOutcome::periodic)) &&
+                          !al.converged() ?
+                        "yes" :
+                        "NO");
       std::cout << std::endl;
     }
 }

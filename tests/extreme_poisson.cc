@@ -6,6 +6,8 @@
 // stresses equals Q1 on parallelograms), which shows as a settlement that
 // still changes under refinement.
 
+#include <hrcontact/postprocess/field_values.h>
+
 #include "tests.h"
 
 int
@@ -30,17 +32,13 @@ main()
           auto problem = hrcontact_tests::solve_from_text<2>(text.str());
           std::ostringstream quiet;
           problem->output_results(quiet);
-          const auto  &s         = problem->summary;
+          const auto  &s         = problem->results().summary;
           const double imbalance = std::abs(s.get_double("total_load_y") +
                                             s.get_double("total_reaction_y")) /
                                    std::abs(s.get_double("total_load_y"));
-          settlement[m] =
-            -problem->postprocessor.point_value(problem->spaces,
-                                                problem->scene,
-                                                problem->displacement,
-                                                problem->stress,
-                                                dealii::Point<2>(2, 1),
-                                                "uy");
+          settlement[m] = -hrcontact::point_value(problem->results(),
+                                                  dealii::Point<2>(2, 1),
+                                                  "uy");
           std::cout << std::defaultfloat << std::setprecision(6)
                     << "nu = " << nu << ", " << s.get("cells")
                     << " cells: converged = " << s.get("converged")

@@ -15,7 +15,7 @@ main()
     "false\n  set Output directory = results\nend\n");
   std::ostringstream quiet;
   problem->output_results(quiet);
-  const auto &s = problem->summary;
+  const auto &s = problem->results().summary;
   std::cout << std::setprecision(4) << "cells " << s.get("cells")
             << ", converged = " << s.get("converged") << "\n"
             << "contact half width " << s.get_double("contact_half_width")

@@ -48,8 +48,8 @@ void
 compare(const std::string &name, const std::string &text, const double angle)
 {
   auto        problem = solve_from_text<2>(common + text);
-  const auto &dh      = problem->spaces.dof_handler_displacement;
-  const auto &fe      = *problem->spaces.fe_displacement;
+  const auto &dh      = problem->results().spaces.dof_handler_displacement;
+  const auto &fe      = *problem->results().spaces.fe_displacement;
 
   // Independent standard displacement solution.
   const double E = 1000, nu = 0.3;
@@ -104,23 +104,25 @@ compare(const std::string &name, const std::string &text, const double angle)
   direct.vmult(u, rhs);
   constraints.distribute(u);
 
-  Vector<double> diff = problem->displacement;
+  Vector<double> diff = problem->results().displacement;
   diff -= u;
   const double u_err = diff.linfty_norm() / u.linfty_norm();
 
   // Stresses: sigma_h against C eps(u) at quadrature points.
-  FEValues<2> fs(*problem->spaces.fe_stress, quadrature, update_values);
+  FEValues<2>                 fs(*problem->results().spaces.fe_stress,
+                 quadrature,
+                 update_values);
   std::vector<Vector<double>> sh(quadrature.size(), Vector<double>(3));
   std::vector<std::vector<Tensor<1, 2>>> grads(quadrature.size(),
                                                std::vector<Tensor<1, 2>>(2));
   double                                 s_err = 0, s_max = 0;
-  auto cs = problem->spaces.dof_handler_stress.begin_active();
+  auto cs = problem->results().spaces.dof_handler_stress.begin_active();
   for (const auto &cell : dh.active_cell_iterators())
     {
       fv.reinit(cell);
       fs.reinit(cs);
       fv.get_function_gradients(u, grads);
-      fs.get_function_values(problem->stress, sh);
+      fs.get_function_values(problem->results().stress, sh);
       for (unsigned int q = 0; q < quadrature.size(); ++q)
         {
           const double exx = grads[q][0][0], eyy = grads[q][1][1],
@@ -138,10 +140,12 @@ compare(const std::string &name, const std::string &text, const double angle)
       ++cs;
     }
 
-  std::cout << name << ": " << problem->triangulation.n_active_cells()
-            << " cells, rows C/Q/H = " << problem->system.free_rows.size()
-            << "/" << problem->system.contact_rows.size() << "/"
-            << problem->system.prescribed_rows.size() << "\n"
+  std::cout << name << ": "
+            << problem->results().triangulation().n_active_cells()
+            << " cells, rows C/Q/H = "
+            << problem->results().system.free_rows.size() << "/"
+            << problem->results().system.contact_rows.size() << "/"
+            << problem->results().system.prescribed_rows.size() << "\n"
             << "  max |u_HR - u_Q1| / max |u_Q1| < 1e-10: "
             << check(u_err, 1e-10)
             << "\n  max |s_HR - C eps(u_Q1)| / max |C eps(u_Q1)| < 1e-10: "

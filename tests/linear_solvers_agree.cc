@@ -33,8 +33,9 @@ void
 compare(const std::string &scene, const std::string &extra)
 {
   const auto a = run<dim>(scene, extra, "  set Solver = direct\n");
-  std::cout << scene << ": " << a->contact_solver.history.size()
-            << " multiplier updates, " << a->contact_solver.total_newton_steps
+  std::cout << scene << ": " << (*a->results().contact).history.size()
+            << " multiplier updates, "
+            << (*a->results().contact).total_newton_steps
             << " Newton steps with UMFPACK" << std::endl;
   for (const std::string variant : {"fresh", "reuse"})
     {
@@ -46,8 +47,9 @@ compare(const std::string &scene, const std::string &extra)
                    "  set Solver = cg-amg\n  set Reuse preconditioner = ") +
                    (reuse ? "true" : "false") +
                    "\n  set Warm start = " + (reuse ? "true" : "false") + "\n");
-      const auto c = hrcontact_tests::compare_histories(a->contact_solver,
-                                                        b->contact_solver);
+      const auto c =
+        hrcontact_tests::compare_histories((*a->results().contact),
+                                           (*b->results().contact));
       std::cout << "  CG + AMG, "
                 << (reuse ? "reused hierarchy, warm start" :
                             "fresh hierarchy, cold start")

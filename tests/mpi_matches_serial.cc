@@ -32,33 +32,38 @@ compare(const std::string &scene, const std::string &extra)
   const auto parallel = run<dim>(scene, extra, MPI_COMM_WORLD);
   const auto serial   = run<dim>(scene, extra, MPI_COMM_SELF);
 
-  const auto  &partition = parallel->partition;
+  const auto  &partition = parallel->results().partition;
   const auto   n_owned   = partition.owned.n_elements();
   const double n_cells =
     std::count(partition.owned_cell.begin(), partition.owned_cell.end(), true);
-  const bool complete =
-    sum(n_owned, MPI_COMM_WORLD) == parallel->system.n_displacement_dofs &&
-    sum(n_cells, MPI_COMM_WORLD) == parallel->triangulation.n_active_cells();
+  const bool complete = sum(n_owned, MPI_COMM_WORLD) ==
+                          parallel->results().system.n_displacement_dofs &&
+                        sum(n_cells, MPI_COMM_WORLD) ==
+                          parallel->results().triangulation().n_active_cells();
   const bool shared = dealii::Utilities::MPI::min(n_owned, MPI_COMM_WORLD) > 0;
 
-  const auto c = hrcontact_tests::compare_histories(parallel->contact_solver,
-                                                    serial->contact_solver);
-  dealii::Vector<double> du = parallel->displacement, ds = parallel->stress;
-  du -= serial->displacement;
-  ds -= serial->stress;
+  const auto c =
+    hrcontact_tests::compare_histories((*parallel->results().contact),
+                                       (*serial->results().contact));
+  dealii::Vector<double> du = parallel->results().displacement,
+                         ds = parallel->results().stress;
+  du -= serial->results().displacement;
+  ds -= serial->results().stress;
   const double u_difference =
-    du.linfty_norm() / serial->displacement.linfty_norm();
-  const double s_difference = ds.linfty_norm() / serial->stress.linfty_norm();
+    du.linfty_norm() / serial->results().displacement.linfty_norm();
+  const double s_difference =
+    ds.linfty_norm() / serial->results().stress.linfty_norm();
 
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     std::cout
-      << scene << " (" << dim << "D, " << parallel->system.n_displacement_dofs
-      << " dofs, " << parallel->linear_statistics.solver << "):\n  "
+      << scene << " (" << dim << "D, "
+      << parallel->results().system.n_displacement_dofs << " dofs, "
+      << parallel->results().linear_statistics.solver << "):\n  "
       << partition.n_processes
       << " processes, p4est partition complete: " << (complete ? "yes" : "NO")
       << ", every process owns dofs: " << (shared ? "yes" : "NO") << "\n  "
-      << serial->contact_solver.history.size() << " multiplier updates, "
-      << serial->contact_solver.total_newton_steps
+      << (*serial->results().contact).history.size() << " multiplier updates, "
+      << (*serial->results().contact).total_newton_steps
       << " Newton steps (serial); same alpha sequence: "
       << (c.same_alpha ? "yes" : "NO")
       << ", same released sets: " << (c.same_sets ? "yes" : "NO")

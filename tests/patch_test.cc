@@ -5,6 +5,8 @@
 // by rollers. The strain of the state is computed here independently of the
 // library's compliance.
 
+#include <hrcontact/postprocess/field_values.h>
+
 #include "tests.h"
 
 using namespace hrcontact_tests;
@@ -33,11 +35,21 @@ patch_text(const std::string &supports_and_loads, const std::string &reference)
 
 template <int dim>
 void
-report(const std::string &name, const hrcontact::HRProblem<dim> &problem)
+report(const std::string               &name,
+       const hrcontact::HRProblem<dim> &problem,
+       const std::string               &reference)
 {
+  const auto exact = hrcontact::make_function<dim>(
+    reference,
+    hrcontact::MixedSpaces<dim>::n_stress_components,
+    {},
+    "reference");
   const auto [max_err, l2_err] =
-    problem.postprocessor.stress_error(problem.spaces, problem.stress);
-  std::cout << "  " << name << ": " << problem.triangulation.n_active_cells()
+    hrcontact::stress_error(problem.results().spaces,
+                            problem.results().stress,
+                            *exact);
+  std::cout << "  " << name << ": "
+            << problem.results().triangulation().n_active_cells()
             << " distorted cells, max relative stress error < 1e-10: "
             << check(max_err, 1e-10)
             << ", L2 relative error < 1e-10: " << check(l2_err, 1e-10)
@@ -87,7 +99,8 @@ run()
     t << "\nend\n";
     report<dim>("displacement patch",
                 *solve_from_text<dim>(
-                  patch_text<dim>(t.str(), reference.str())));
+                  patch_text<dim>(t.str(), reference.str())),
+                reference.str());
   }
 
   // (b) normal stresses only, by tractions on the faces x = 1, y = 1 (z = 1)
@@ -111,12 +124,15 @@ run()
       }
     t << "\nend\n";
     auto problem = solve_from_text<dim>(patch_text<dim>(t.str(), ref.str()));
-    report<dim>("traction patch", *problem);
+    report<dim>("traction patch", *problem, ref.str());
     // The rollers carry the load: reaction on x = 0 balances s_xx * area.
     double rx = 0;
-    for (unsigned int k = 0; k < problem->system.prescribed_rows.size(); ++k)
-      rx += problem->support_reactions[k] *
-            problem->system.rows[problem->system.prescribed_rows[k]]
+    for (unsigned int k = 0;
+         k < problem->results().system.prescribed_rows.size();
+         ++k)
+      rx += problem->results().support_reactions[k] *
+            problem->results()
+              .system.rows[problem->results().system.prescribed_rows[k]]
               .combination[0]
               .second;
     std::cout << "  traction patch: roller reaction in x = " << rx

@@ -24,7 +24,7 @@ compare_contact(const std::string &scene, const std::string &extra)
 {
   const auto  a  = run<2>(scene, extra, "null-space");
   const auto  b  = run<2>(scene, extra, "condensed");
-  const auto &ha = a->contact_solver, &hb = b->contact_solver;
+  const auto &ha = (*a->results().contact), &hb = (*b->results().contact);
   const auto  c = hrcontact_tests::compare_histories(ha, hb);
   std::cout
     << scene << ": " << ha.history.size() << " and " << hb.history.size()
@@ -42,8 +42,9 @@ compare_contact(const std::string &scene, const std::string &extra)
       n += sys.is_stored(cell);
     return n;
   };
-  std::cout << "  cells with stored blocks: " << stored(a->system) << " and "
-            << stored(b->system) << " of " << a->system.n_cells() << std::endl;
+  std::cout << "  cells with stored blocks: " << stored(a->results().system)
+            << " and " << stored(b->results().system) << " of "
+            << a->results().system.n_cells() << std::endl;
 }
 
 int
@@ -54,14 +55,17 @@ main()
                   "subsection Geometry\n  set Global refinements = 3\nend\n");
   const auto             a  = run<2>("cantilever.prm", "", "null-space");
   const auto             b  = run<2>("cantilever.prm", "", "condensed");
-  dealii::Vector<double> ds = a->stress, du = a->displacement;
-  ds -= b->stress;
-  du -= b->displacement;
-  std::cout
-    << "cantilever.prm (no contact):\n  stresses agree to 1e-10: "
-    << hrcontact_tests::check(ds.linfty_norm() / a->stress.linfty_norm(), 1e-10)
-    << "\n  displacements agree to 1e-10: "
-    << hrcontact_tests::check(du.linfty_norm() / a->displacement.linfty_norm(),
-                              1e-10)
-    << std::endl;
+  dealii::Vector<double> ds = a->results().stress,
+                         du = a->results().displacement;
+  ds -= b->results().stress;
+  du -= b->results().displacement;
+  std::cout << "cantilever.prm (no contact):\n  stresses agree to 1e-10: "
+            << hrcontact_tests::check(ds.linfty_norm() /
+                                        a->results().stress.linfty_norm(),
+                                      1e-10)
+            << "\n  displacements agree to 1e-10: "
+            << hrcontact_tests::check(du.linfty_norm() /
+                                        a->results().displacement.linfty_norm(),
+                                      1e-10)
+            << std::endl;
 }

@@ -28,24 +28,25 @@ int
 main()
 {
   const auto   al      = run("consistent augmented Lagrangian", 1e4);
-  const double p_scale = al->summary.get_double("max_abs_p_n");
+  const double p_scale = al->results().summary.get_double("max_abs_p_n");
   std::cout << "consistent augmented Lagrangian: "
-            << al->contact_solver.history.size() << " updates, tension "
-            << al->summary.get("max_positive_p_n") << std::endl;
+            << (*al->results().contact).history.size() << " updates, tension "
+            << al->results().summary.get("max_positive_p_n") << std::endl;
   double previous_tension = 0;
   for (const double factor : {1e4, 1e6, 1e8})
     {
-      const auto   pp      = run("pure penalty", factor);
-      const double tension = pp->summary.get_double("max_positive_p_n");
-      double       p_error = 0;
-      for (unsigned int k = 0; k < al->contact_reactions.size(); ++k)
+      const auto   pp = run("pure penalty", factor);
+      const double tension =
+        pp->results().summary.get_double("max_positive_p_n");
+      double p_error = 0;
+      for (unsigned int k = 0; k < al->results().contact_reactions.size(); ++k)
         p_error = std::max(p_error,
-                           std::abs(pp->contact_reactions[k] -
-                                    al->contact_reactions[k]));
+                           std::abs(pp->results().contact_reactions[k] -
+                                    al->results().contact_reactions[k]));
       std::cout << "pure penalty, alpha = " << std::setprecision(1) << factor
                 << " x nodal compliance: converged = "
-                << pp->summary.get("converged") << ", "
-                << pp->contact_solver.total_newton_steps
+                << pp->results().summary.get("converged") << ", "
+                << (*pp->results().contact).total_newton_steps
                 << " Newton steps, tension / max |p| = " << std::scientific
                 << std::setprecision(2) << tension / p_scale
                 << ", max |p - p_AL| / max |p| = " << p_error / p_scale

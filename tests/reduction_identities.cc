@@ -42,8 +42,8 @@ subsection Supports
   set Normal displacements = 2: 0.01*x
 end
 )");
-  const auto        &sys     = problem->system;
-  const auto        &red     = problem->reduction;
+  const auto        &sys     = problem->results().system;
+  const auto        &red     = (*problem->results().reduction);
   const unsigned int tau = sys.n_stress_dofs, n = sys.free_rows.size(),
                      m = red.n_self_equilibrated();
 
@@ -92,8 +92,8 @@ end
 
   // F s = B^T u with the global displacements.
   Vector<double> Fs, Btu(tau);
-  sys.multiply_flexibility(problem->stress, Fs);
-  sys.B.Tvmult(Btu, problem->displacement);
+  sys.multiply_flexibility(problem->results().stress, Fs);
+  sys.B.Tvmult(Btu, problem->results().displacement);
   Vector<double> r = Fs;
   r -= Btu;
   // u.n = g on the Q rows.
@@ -102,7 +102,7 @@ end
     {
       double w = 0;
       for (const auto &[dof, c] : sys.rows[q].combination)
-        w += c * problem->displacement[dof];
+        w += c * problem->results().displacement[dof];
       wn = std::max(wn, std::abs(w - sys.rows[q].value));
     }
 

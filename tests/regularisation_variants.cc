@@ -39,12 +39,12 @@ main()
       const auto reference =
         run(scene, "consistent augmented Lagrangian", "classical");
       double p_scale = 0, u_scale = 0;
-      for (const double p : reference->contact_reactions)
+      for (const double p : reference->results().contact_reactions)
         p_scale = std::max(p_scale, std::abs(p));
-      for (const double u : reference->displacement)
+      for (const double u : reference->results().displacement)
         u_scale = std::max(u_scale, std::abs(u));
       std::cout << scene << ": reference converged: "
-                << (reference->contact_solver.converged ? "yes" : "NO")
+                << (reference->results().converged() ? "yes" : "NO")
                 << std::endl;
       for (const std::string variant :
            {"consistent", "Macaulay", "displacement"})
@@ -52,24 +52,25 @@ main()
           {
             const auto problem =
               run(scene, variant + " augmented Lagrangian", scheme);
-            const auto &al      = problem->contact_solver;
-            const auto &sys     = problem->system;
+            const auto &al      = (*problem->results().contact);
+            const auto &sys     = problem->results().system;
             double      p_error = 0, tension = 0, penetration = 0;
             for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
               {
                 const auto &row = sys.rows[sys.contact_rows[k]];
                 double      w   = 0;
                 for (const auto &[dof, c] : row.combination)
-                  w += c * problem->displacement[dof];
-                const double p = problem->contact_reactions[k];
+                  w += c * problem->results().displacement[dof];
+                const double p = problem->results().contact_reactions[k];
                 p_error =
                   std::max(p_error,
-                           std::abs(p - reference->contact_reactions[k]));
+                           std::abs(p -
+                                    reference->results().contact_reactions[k]));
                 tension     = std::max(tension, p);
                 penetration = std::max(penetration, w - row.value);
               }
             std::cout << "  " << variant << ", " << scheme << ": ";
-            if (al.converged)
+            if (al.converged())
               std::cout << "converged in " << al.history.size() << " updates, "
                         << al.total_newton_steps
                         << " Newton steps; reactions as the reference (1e-7): "
@@ -79,9 +80,13 @@ main()
                         << "; no penetration (1e-8): "
                         << hrcontact_tests::check(penetration / u_scale, 1e-8);
             else
-              std::cout << (al.cycled   ? "stopped: the inner Newton cycles" :
-                            al.diverged ? "stopped by the divergence guard" :
-                                          "NOT converged");
+              std::cout << ((al.outcome ==
+                               hrcontact::SolveOutcome::inner_cycle ||
+                             al.outcome == hrcontact::SolveOutcome::periodic) ?
+                              "stopped: the inner Newton cycles" :
+                            (al.outcome == hrcontact::SolveOutcome::diverged) ?
+                              "stopped by the divergence guard" :
+                              "NOT converged");
             std::cout << std::endl;
           }
     }

@@ -54,9 +54,9 @@ main()
       for (unsigned int k = 0; k < columns; ++k)
         middles.push_back((k + 0.5) * h);
       const auto forces =
-        hrcontact::compute_section_forces(problem->spaces,
-                                          problem->stress,
-                                          problem->displacement,
+        hrcontact::compute_section_forces(problem->results().spaces,
+                                          problem->results().stress,
+                                          problem->results().displacement,
                                           stations_at(middles));
       double err_N = 0, err_V = 0, err_M = 0, err_thickness = 0;
       for (const auto &f : forces)
@@ -85,9 +85,9 @@ main()
 
       // Off the middles, and exactly on a mesh line (two cells share it).
       const auto others = hrcontact::compute_section_forces(
-        problem->spaces,
-        problem->stress,
-        problem->displacement,
+        problem->results().spaces,
+        problem->results().stress,
+        problem->results().displacement,
         stations_at({0.3 * h, 13.7 * h, 20 * h, L - 0.1 * h}));
       double err_N_off = 0, err_M_off = 0;
       for (const auto &f : others)
@@ -108,9 +108,9 @@ main()
   // A station outside the body is an input error, not a crash.
   try
     {
-      hrcontact::compute_section_forces(problem->spaces,
-                                        problem->stress,
-                                        problem->displacement,
+      hrcontact::compute_section_forces(problem->results().spaces,
+                                        problem->results().stress,
+                                        problem->results().displacement,
                                         stations_at({L + 1}));
       std::cout << "station outside: NO error" << std::endl;
     }

@@ -71,7 +71,7 @@ run(const Case &c)
   problem->output_results(quiet);
 
   // ---- the independent solution --------------------------------------
-  const DoFHandler<2> &dh = problem->spaces.dof_handler_displacement;
+  const DoFHandler<2> &dh = problem->results().spaces.dof_handler_displacement;
   const Tensor<1, 2>   n  = c.obstacle_normal / c.obstacle_normal.norm();
   // Contact nodes of boundary 2: x dof, y dof, position; and fixed x dofs.
   std::map<types::global_dof_index,
@@ -169,23 +169,25 @@ run(const Case &c)
     }
 
   // ---- comparison -------------------------------------------------------
-  Vector<double> diff = problem->displacement;
+  Vector<double> diff = problem->results().displacement;
   diff -= u;
   double      p_diff = 0, p_max = 0;
-  const auto &sys = problem->system;
+  const auto &sys = problem->results().system;
   for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
     {
       const auto &row = sys.rows[sys.contact_rows[k]];
       const auto  yd  = row.combination[1].first;
       p_diff =
-        std::max(p_diff, std::abs(problem->contact_reactions[k] - p[yd]));
+        std::max(p_diff,
+                 std::abs(problem->results().contact_reactions[k] - p[yd]));
       p_max = std::max(p_max, std::abs(p[yd]));
     }
   std::cout << c.name << "\n  independent active set: " << active.size()
             << " of " << contact.size() << " base nodes pressed, after "
             << iterations + 1 << " solves\n"
-            << "  HR: converged = " << problem->summary.get("converged")
-            << ", pressed = " << problem->summary.get("pressed_constraints")
+            << "  HR: converged = "
+            << problem->results().summary.get("converged") << ", pressed = "
+            << problem->results().summary.get("pressed_constraints")
             << "\n  max |u_HR - u_Q1| / max |u_Q1| < 1e-8: "
             << check(diff.linfty_norm() / u.linfty_norm(), 1e-8)
             << "\n  max |p_HR - p_Q1| / max |p_Q1| < 1e-8: "

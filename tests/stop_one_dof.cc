@@ -155,8 +155,8 @@ main(int argc, char **argv)
                 path = std::make_unique<CondensedStep>(system);
               const bool converged =
                 solver.solve(system, *path, std::abs(f), log);
-              const double u    = solver.opening[0]; // w - g, g = 0
-              const double p    = solver.p[0];
+              const double u    = solver.result().opening[0]; // w - g, g = 0
+              const double p    = solver.result().p[0];
               const auto   hand = by_hand(*stop, f);
               const bool   ok =
                 converged &&
@@ -167,13 +167,14 @@ main(int argc, char **argv)
                           << ": u = " << std::setw(9) << hand.first
                           << ", p = " << std::setw(9) << hand.second
                           << ", branch '"
-                          << stop->branch_name(solver.pieces[0].branch) << "'"
-                          << std::endl;
+                          << stop->branch_name(solver.result().pieces[0].branch)
+                          << "'" << std::endl;
               std::cout << "    " << std::setw(9) << scheme << ", "
                         << std::setw(10) << path_name << ": "
                         << (ok ? "matches the hand solution" : "WRONG")
-                        << ", updates " << solver.history.size()
-                        << ", Newton steps " << solver.total_newton_steps;
+                        << ", updates " << solver.result().history.size()
+                        << ", Newton steps "
+                        << solver.result().total_newton_steps;
               if (!ok)
                 std::cout << " (u = " << u << ", p = " << p << ")";
               std::cout << std::endl;

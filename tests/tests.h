@@ -61,8 +61,8 @@ namespace hrcontact_tests
   };
 
   inline HistoryComparison
-  compare_histories(const hrcontact::AugmentedLagrangianSolver &a,
-                    const hrcontact::AugmentedLagrangianSolver &b)
+  compare_histories(const hrcontact::ContactIteration &a,
+                    const hrcontact::ContactIteration &b)
   {
     HistoryComparison c;
     c.same_alpha = a.alpha_history.size() == b.alpha_history.size();
@@ -97,13 +97,13 @@ namespace hrcontact_tests
   void
   print_kkt(const hrcontact::HRProblem<dim> &problem)
   {
-    const auto &sys = problem.system;
+    const auto &sys = problem.results().system;
     // Force and length scales for the tolerances.
     double force = 0, length = 0;
     for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
-      force = std::max(force, std::abs(problem.contact_reactions[k]));
-    for (unsigned int i = 0; i < problem.displacement.size(); ++i)
-      length = std::max(length, std::abs(problem.displacement[i]));
+      force = std::max(force, std::abs(problem.results().contact_reactions[k]));
+    for (unsigned int i = 0; i < problem.results().displacement.size(); ++i)
+      length = std::max(length, std::abs(problem.results().displacement[i]));
     double       max_p = -1e300, max_pen = -1e300, max_compl = 0;
     unsigned int pressed = 0, open = 0;
     for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
@@ -113,8 +113,8 @@ namespace hrcontact_tests
           continue;
         double w = 0;
         for (const auto &[dof, c] : row.combination)
-          w += c * problem.displacement[dof];
-        const double p = problem.contact_reactions[k];
+          w += c * problem.results().displacement[dof];
+        const double p = problem.results().contact_reactions[k];
         max_p          = std::max(max_p, p / force);
         max_pen        = std::max(max_pen, (w - row.value) / length);
         max_compl =
@@ -124,7 +124,7 @@ namespace hrcontact_tests
     // Equilibrium of the free rows: C s = f.
     double                 eq = 0, f_scale = force;
     dealii::Vector<double> residual;
-    sys.equilibrium_residual(problem.stress, residual);
+    sys.equilibrium_residual(problem.results().stress, residual);
     for (const unsigned int r : sys.free_rows)
       {
         double row_residual = 0;
@@ -139,7 +139,8 @@ namespace hrcontact_tests
       << "  equilibrium max |C s - f| / force scale < 1e-10: "
       << check(eq / f_scale, 1e-10) << "\n"
       << "  global balance |total load + total reaction| / |load| < 1e-10: "
-      << check(problem.summary.get_double("equilibrium_imbalance"), 1e-10)
+      << check(problem.results().summary.get_double("equilibrium_imbalance"),
+               1e-10)
       << "\n  max p / max |p| <= 1e-10 (compressive reactions): "
       << check(max_p, 1e-10)
       << "\n  max (w_n - g) / max |u| <= 1e-8 (no penetration): "

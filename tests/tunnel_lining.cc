@@ -32,9 +32,9 @@ run(const unsigned int refinements)
     "timing = false\n  set Output directory = results\nend\n");
   std::ostringstream quiet;
   problem->output_results(quiet);
-  const auto  &summary = problem->summary;
-  const auto  &c       = problem->scene.constants;
-  const auto  &lining  = *problem->scene.lining;
+  const auto  &summary = problem->results().summary;
+  const auto  &c       = problem->results().scene.constants;
+  const auto  &lining  = *problem->results().scene.lining;
   const double pi      = dealii::numbers::PI;
   std::cout << "tunnel lining, " << refinements
             << " refinements: " << summary.get("cells")
@@ -81,8 +81,8 @@ run(const unsigned int refinements)
 
   // Pressed zones "a - b; c - d" from summary.txt.
   Zones result;
-  result.spacing =
-    lining.extrados_length() / (problem->system.contact_rows.size() - 1);
+  result.spacing = lining.extrados_length() /
+                   (problem->results().system.contact_rows.size() - 1);
   std::cout << "  pressed zones along the extrados:";
   for (const std::string &z :
        hrcontact::split_and_trim(summary.get("lining_pressed_zones"), ';'))

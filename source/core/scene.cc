@@ -698,6 +698,23 @@ namespace hrcontact
   }
 
   template <int dim>
+  double
+  Scene<dim>::nodal_compliance(const Triangulation<dim> &triangulation) const
+  {
+    double c_h = 1 / youngs_modulus;
+    if (dim == 2 && plane_strain)
+      c_h *= 1 - poisson_ratio * poisson_ratio;
+    if (dim == 3)
+      {
+        double volume = 0;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          volume += cell->measure();
+        c_h /= std::cbrt(volume / triangulation.n_active_cells());
+      }
+    return c_h;
+  }
+
+  template <int dim>
   std::string
   Scene<dim>::plane_condition_name() const
   {

@@ -10,6 +10,7 @@
 #include <iostream>
 #include <limits>
 #include <set>
+#include <sstream>
 #include <tuple>
 
 namespace hrcontact
@@ -300,6 +301,140 @@ namespace hrcontact
                                    const double             load_scale,
                                    std::ostream            &log)
   {
+    relinearisation = nullptr;
+    iterate(system, path, load_scale, log);
+    set_outcome();
+    return converged;
+  }
+
+  bool
+  AugmentedLagrangianSolver::solve(const EquilibriumSystem &system,
+                                   NewtonStepPath          &path,
+                                   const double             load_scale,
+                                   RowRelinearisation      &relinearise,
+                                   std::ostream            &log)
+  {
+    relinearisation = &relinearise;
+    iterate(system, path, load_scale, log);
+    relinearisation = nullptr;
+    set_outcome();
+    return converged;
+  }
+
+  void
+  AugmentedLagrangianSolver::set_outcome()
+  {
+    // One outcome, in the order in which the causes explain each other.
+    outcome = floating         ? SolveOutcome::floating :
+              roundoff_limited ? SolveOutcome::roundoff_limited :
+              periodic         ? SolveOutcome::periodic :
+              cycled           ? SolveOutcome::inner_cycle :
+              diverged         ? SolveOutcome::diverged :
+              converged        ? SolveOutcome::converged :
+                                 SolveOutcome::iteration_limit;
+  }
+
+  std::string
+  AugmentedLagrangianSolver::outcome_message(
+    const unsigned int free_rigid_motions) const
+  {
+    const std::string mechanism_hint =
+      free_rigid_motions == 0 ?
+        std::string() :
+        " Note: only the contacts hold this body along " +
+          std::to_string(free_rigid_motions) +
+          " rigid-body motion(s); if the loads pull it off its obstacles, no "
+          "equilibrium exists (a mechanism).";
+    std::ostringstream s;
+    switch (outcome)
+      {
+        case SolveOutcome::converged:
+          return "";
+        case SolveOutcome::floating:
+          return "every contact constraint released at multiplier update " +
+                 std::to_string(floating_update) +
+                 ", and nothing else holds the body: the supports leave " +
+                 std::to_string(free_rigid_motions) +
+                 " rigid-body motion(s) free, and the loads pull the body off "
+                 "its obstacles along them (a mechanism: no equilibrium "
+                 "exists). Check the direction of the loads, the obstacles' "
+                 "normals and the supports. Results were written with "
+                 "converged = false.";
+        case SolveOutcome::roundoff_limited:
+          s << "the displacement augmented Lagrangian reached its round-off "
+               "floor at multiplier update "
+            << history.size() << ": the change of the reactions, "
+            << final_norm_pbar
+            << ", has reached the noise floor that the rounding of the "
+               "displacements and the linear solver's tolerance leave at this "
+               "stiffness (about "
+            << roundoff_floor << "), above the tolerance " << tolerance_used
+            << ". Loosen Augmented Lagrangian/Relative tolerance, reduce "
+               "Initial penalty, or tighten Linear solver/Tolerance. Results "
+               "were written with converged = false.";
+          return s.str();
+        case SolveOutcome::periodic:
+          return "the diagonal scheme cycles: multiplier update " +
+                 std::to_string(history.size()) +
+                 " reproduced an earlier update (the same branches, penalties "
+                 "and multipliers), so the iteration is periodic and would "
+                 "never converge. Take Augmented Lagrangian/Iteration scheme = "
+                 "classical, or another Initial penalty." +
+                 mechanism_hint +
+                 " Results were written with converged = false.";
+        case SolveOutcome::inner_cycle:
+          return "the inner Newton iteration of multiplier update " +
+                 std::to_string(history.size() + 1) +
+                 " cycles: it came back to a released set it had already "
+                 "solved, so it would never reach its tolerance. " +
+                 std::string(
+                   regularisation == Regularisation::macaulay ?
+                     "The Macaulay bracket (p)_+ has a kink at p = 0 wherever "
+                     "mu is not 0, so its pieces do not join with a continuous "
+                     "slope. Use the consistent augmented Lagrangian, or "
+                     "Iteration scheme = diagonal." :
+                     "The pieces join smoothly, so the solves have lost their "
+                     "digits: the usual cause is an Initial penalty far larger "
+                     "than the nodal compliance of the mesh (released springs "
+                     "that no longer hold the body). Reduce Augmented "
+                     "Lagrangian/Initial penalty.") +
+                 mechanism_hint +
+                 " Results were written with converged = false.";
+        case SolveOutcome::diverged:
+          s << "the augmented Lagrangian iteration stopped at multiplier update "
+            << history.size()
+            << " without converging: ||pbar|| = " << final_norm_pbar
+            << " either exceeds a million times the load scale or would need "
+               "alpha beyond Maximum penalty growth x Initial penalty (alpha "
+               "is "
+            << alpha.front()
+            << "). The usual cause is an Initial penalty far from the nodal "
+               "compliance of the mesh: far larger, the released springs no "
+               "longer hold the body and the solves lose their digits; far "
+               "smaller, alpha cannot grow enough. Adjust Augmented "
+               "Lagrangian/Initial penalty."
+            << mechanism_hint
+            << " Results were written with converged = false.";
+          return s.str();
+        case SolveOutcome::iteration_limit:
+          s << "the augmented Lagrangian iteration did not converge in "
+            << history.size()
+            << " multiplier updates (Augmented Lagrangian/Maximum multiplier "
+               "updates): ||pbar|| = "
+            << final_norm_pbar << " > tolerance " << tolerance_used
+            << ". Results were written with "
+            << "converged = false.";
+          return s.str();
+      }
+    return "";
+  }
+
+  bool
+  AugmentedLagrangianSolver::iterate(const EquilibriumSystem &system,
+                                     NewtonStepPath          &path,
+                                     const double             load_scale,
+                                     std::ostream            &log)
+  {
     const unsigned int nq = system.contact_rows.size();
     std::vector<bool>  unilateral(nq);
     law.assign(nq, nullptr);
@@ -311,6 +446,7 @@ namespace hrcontact
       }
 
     Timer timer;
+    alpha_0 = initial_alpha;
     mu.assign(nq, 0.);
     alpha.assign(nq, initial_alpha);
     released.assign(nq, false);
@@ -517,9 +653,10 @@ namespace hrcontact
         norm_previous = norm;
         pbar_previous = pbar;
 
-        eps_k            = pure_penalty ? 0. : // solve the piece exactly
+        eps_k = pure_penalty ? 0. : // solve the piece exactly
                                inner_tolerance(norm, eps_previous);
-        geometry_changed = after_update && after_update();
+        geometry_changed =
+          relinearisation && relinearisation->relinearise(path, opening);
 
         // Step 3: Newton steps until the gradient, in contact coordinates
         // e = (w - g of the piece at p) - balanced, falls by eps_k (the

@@ -933,6 +933,19 @@ namespace hrcontact
   }
 
   void
+  NewtonStepPath::rows_changed()
+  {}
+
+  void
+  NullSpaceStep::rows_changed()
+  {
+    throw InputError(
+      "the null-space path cannot follow constraint rows that change during "
+      "the solve (curved obstacles updated between multiplier updates need "
+      "Equilibrium reduction/Path = condensed).");
+  }
+
+  void
   NewtonStepPath::contact_displacements(std::vector<double> &) const
   {
     throw InputError(

@@ -47,6 +47,14 @@ namespace hrcontact
     double
     out_of_plane_stress(const dealii::SymmetricTensor<2, dim> &sigma) const;
 
+    /**
+     * The nodal compliance c_h that scales the initial penalty: (1 - nu^2)/E
+     * in plane strain, 1/E in plane stress, 1/(E h) in 3D with h the mean
+     * cell size.
+     */
+    double
+    nodal_compliance(const dealii::Triangulation<dim> &triangulation) const;
+
     /** Human-readable description of the 2D assumption ("3D" in 3D). */
     std::string
     plane_condition_name() const;

@@ -1,122 +1,145 @@
 #ifndef hrcontact_postprocessor_h
 #define hrcontact_postprocessor_h
 
-#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/point.h>
 
-#include <deal.II/lac/vector.h>
+#include <hrcontact/core/input.h>
+#include <hrcontact/core/results.h>
+#include <hrcontact/postprocess/summary.h>
 
-#include <hrcontact/core/scene.h>
-#include <hrcontact/discretisation/dof_partition.h>
-#include <hrcontact/discretisation/equilibrium_system.h>
-#include <hrcontact/discretisation/mixed_spaces.h>
-
+#include <functional>
 #include <memory>
 #include <ostream>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace hrcontact
 {
-  /** Ordered "key = value" lines of summary.txt. */
-  class Summary
+  /** Where a postprocessor puts what it computes. */
+  struct PostprocessOutput
   {
-  public:
-    void
-    add(const std::string &key, const std::string &value);
-    void
-    add(const std::string &key, const double value);
-    /** Value of a key; throws if absent. */
-    std::string
-    get(const std::string &key) const;
-    double
-    get_double(const std::string &key) const;
-    /** Write atomically (temporary file, then rename). */
-    void
-    write(const std::string &filename) const;
-
-    std::vector<std::pair<std::string, std::string>> entries;
+    Summary      &summary;
+    std::ostream &log;
+    /** The Output directory (exists when postprocessors run). */
+    std::string directory;
+    /** Process 0 of it writes the replicated tables. */
+    MPI_Comm communicator;
+    /** Files to name in the run's last line beside summary.txt. */
+    std::vector<std::string> mentioned_files;
   };
 
-  /** Write a file atomically: whole or not at all. */
-  void
-  write_file_atomically(const std::string                         &filename,
-                        const std::function<void(std::ostream &)> &writer);
-
   /**
-   * The same on process 0 of the communicator only: every process holds the
-   * replicated results, one writes them.
-   */
-  void
-  write_file_atomically(const MPI_Comm                             communicator,
-                        const std::string                         &filename,
-                        const std::function<void(std::ostream &)> &writer);
-
-  /**
-   * Everything computed after the solve: global balance, probes at points,
-   * comparison with reference values and a reference stress field, and the
-   * output files of design.md section 6 (summary.txt, solution.vtu).
+   * One thing computed after the solve: a report in summary.txt and the
+   * log, a table, a field file (ASPECT's postprocessor pattern). Each
+   * implementation registers itself by name with
+   * HRCONTACT_REGISTER_POSTPROCESSOR and declares its own parameters;
+   * `Postprocess/List of postprocessors` chooses which run and in what
+   * order (doc/design.md, "Adding a postprocessor").
    */
   template <int dim>
   class Postprocessor
   {
   public:
+    virtual ~Postprocessor() = default;
+
+    /** Read this postprocessor's parameters (declared by its static
+     * declare_parameters). */
+    virtual void
+    parse_parameters(dealii::ParameterHandler &prm, const Constants &constants);
+
+    /**
+     * Why it has nothing to do for this run (e.g. no contact), or empty
+     * when it applies. `all` skips it silently; a list that names it says so
+     * in the log.
+     */
+    virtual std::string
+    skip_reason(const Results<dim> &results) const;
+
+    /** Compute and report. */
+    virtual void
+    execute(const Results<dim> &results, PostprocessOutput &output) = 0;
+  };
+
+  /**
+   * The name -> factory registry of postprocessors and the list a run
+   * executes. `all` (the default) runs every registered postprocessor that
+   * applies, in the order of their registered positions: the order of the
+   * keys in summary.txt.
+   */
+  template <int dim>
+  class PostprocessorManager
+  {
+  public:
+    using Factory = std::function<std::unique_ptr<Postprocessor<dim>>()>;
+
+    /**
+     * Register a postprocessor; called at start-up by
+     * HRCONTACT_REGISTER_POSTPROCESSOR. `position` orders `all`.
+     */
+    static bool
+    register_postprocessor(
+      const std::string                                     &name,
+      const std::string                                     &description,
+      const unsigned int                                     position,
+      const std::function<void(dealii::ParameterHandler &)> &declare,
+      const Factory                                         &factory);
+
+    /** The list entry and every registered postprocessor's parameters. */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+
+    /** Create the listed postprocessors and let them read their
+     * parameters; an unknown name is an InputError. */
     void
     parse_parameters(dealii::ParameterHandler &prm, const Constants &constants);
 
-    /** A displacement or stress quantity at a point. */
-    double
-    point_value(const MixedSpaces<dim>       &spaces,
-                const Scene<dim>             &scene,
-                const dealii::Vector<double> &u,
-                const dealii::Vector<double> &s,
-                const dealii::Point<dim>     &point,
-                const std::string            &quantity) const;
-
-    /**
-     * Max and L2 norms of sigma_h - sigma_ref over the mesh, each relative
-     * to the same norm of sigma_ref (Frobenius norm pointwise).
-     */
-    std::pair<double, double>
-    stress_error(const MixedSpaces<dim>       &spaces,
-                 const dealii::Vector<double> &s) const;
-
-    /** Fill the summary with probes, references, errors. */
+    /** Run them in order. */
     void
-    evaluate(const MixedSpaces<dim>       &spaces,
-             const Scene<dim>             &scene,
-             const dealii::Vector<double> &u,
-             const dealii::Vector<double> &s,
-             Summary                      &summary,
-             std::ostream                 &log) const;
+    execute(const Results<dim> &results, PostprocessOutput &output) const;
 
-    /**
-     * solution.vtu, or with several processes solution.pvtu and one piece
-     * solution_NNNN.vtu per process with the cells it owns (and a
-     * "subdomain" field). Returns the name written.
-     */
-    std::string
-    write_solution(const MixedSpaces<dim>       &spaces,
-                   const Scene<dim>             &scene,
-                   const dealii::Vector<double> &u,
-                   const dealii::Vector<double> &s,
-                   const DofPartition           &partition,
-                   const std::string            &directory) const;
+    /** The names registered, in `all` order. */
+    static std::vector<std::string>
+    registered_names();
 
-    struct Probe
+  private:
+    struct Entry
     {
-      std::string        name;
-      dealii::Point<dim> point;
-      std::string        quantity;
+      std::string                                     name, description;
+      unsigned int                                    position = 0;
+      std::function<void(dealii::ParameterHandler &)> declare;
+      Factory                                         factory;
     };
-    std::vector<Probe>                           probes;
-    std::vector<std::pair<std::string, double>>  reference_values;
-    std::unique_ptr<dealii::FunctionParser<dim>> reference_stress;
+    static std::vector<Entry> &
+    registry();
+
+    /** Whether the list was `all` (skip silently what does not apply). */
+    bool                                             run_all = true;
+    std::vector<std::string>                         names;
+    std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
   };
 } // namespace hrcontact
+
+/**
+ * Register CLASSNAME<2> and CLASSNAME<3> as postprocessor NAME at POSITION
+ * of `all`, in the class's source file.
+ */
+#define HRCONTACT_REGISTER_POSTPROCESSOR(classname, name, position, text) \
+  namespace                                                               \
+  {                                                                       \
+    const bool classname##_registered_2d =                                \
+      ::hrcontact::PostprocessorManager<2>::register_postprocessor(       \
+        name,                                                             \
+        text,                                                             \
+        position,                                                         \
+        &classname<2>::declare_parameters,                                \
+        [] { return std::make_unique<classname<2>>(); });                 \
+    const bool classname##_registered_3d =                                \
+      ::hrcontact::PostprocessorManager<3>::register_postprocessor(       \
+        name,                                                             \
+        text,                                                             \
+        position,                                                         \
+        &classname<3>::declare_parameters,                                \
+        [] { return std::make_unique<classname<3>>(); });                 \
+  }
 
 #endif

@@ -9,25 +9,16 @@
 #include <hrcontact/constraints/constraint_law.h>
 #include <hrcontact/core/input.h>
 #include <hrcontact/discretisation/equilibrium_system.h>
+#include <hrcontact/solvers/contact_iteration.h>
 #include <hrcontact/solvers/newton_step.h>
+#include <hrcontact/solvers/row_relinearisation.h>
 
-#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 namespace hrcontact
 {
-  /** One row of history.csv: one multiplier update. */
-  struct AugmentedLagrangianStep
-  {
-    unsigned int k            = 0;
-    unsigned int newton_steps = 0;
-    double       alpha_min = 0, alpha_max = 0, eps_k = 0, norm_pbar = 0;
-    unsigned int active_changes = 0;
-    double       seconds        = 0;
-  };
-
   /**
    * Frictionless unilateral contact by the consistent augmented Lagrangian of
    * section 4.4, on the reduced unknowns s0 of the EquilibriumReduction.
@@ -50,8 +41,11 @@ namespace hrcontact
    * exact solve with the set A_old, the gradient of eq. 46 is (QR)^T e with
    * e_i = [i in A](mu_i - alpha_i p_i) - [i in A_old](mu_old_i - alpha_old_i
    * p_i): eps_k is applied to |e|, the gradient in contact coordinates.
+   *
+   * The state it iterates on is a ContactIteration (private base: the
+   * solver is implemented in terms of it); result() hands it out read-only.
    */
-  class AugmentedLagrangianSolver
+  class AugmentedLagrangianSolver : private ContactIteration
   {
   public:
     static void
@@ -76,6 +70,35 @@ namespace hrcontact
           NewtonStepPath          &path,
           const double             load_scale,
           std::ostream            &log);
+
+    /**
+     * The same, with constraint rows that follow the configuration: after
+     * every update that did not converge, before the next Newton steps,
+     * `relinearisation.relinearise` is called (curved obstacles at the
+     * current configuration).
+     */
+    bool
+    solve(const EquilibriumSystem &system,
+          NewtonStepPath          &path,
+          const double             load_scale,
+          RowRelinearisation      &relinearisation,
+          std::ostream            &log);
+
+    /** The state, history and outcome of the last solve. */
+    const ContactIteration &
+    result() const
+    {
+      return *this;
+    }
+
+    /**
+     * One message naming why the last solve did not converge and what to
+     * change, for the error the run ends with; `free_rigid_motions` (the
+     * motions only the contacts hold) adds a hint about mechanisms.
+     * Empty when it converged.
+     */
+    std::string
+    outcome_message(const unsigned int free_rigid_motions) const;
 
     // Parameters (section 4.4, Step 1).
     /**
@@ -124,72 +147,33 @@ namespace hrcontact
     law_of(const EquilibriumRow &row) const;
 
     /**
-     * Called after every multiplier update that did not converge, before
-     * the next Newton steps (curved obstacles re-linearised at the current
-     * configuration). Returns whether it changed the rows: the next update
-     * then solves at least once, and convergence waits for a call that
-     * changed nothing.
-     */
-    std::function<bool()> after_update;
-
-    // Results, one entry per Q row (bilateral rows: mu = 0, always pressed).
-    std::vector<double> p, mu, alpha;
-    /** Whether the row's piece at p is its law's free branch (released). */
-    std::vector<bool> released;
-    /** The law of each row during the last solve. */
-    std::vector<const ConstraintLaw *> law;
-    /** The piece (and branch) of each row at p after the last update. */
-    std::vector<ContactPiece> pieces;
-    /**
-     * w_n - g per Q row after the last update: mu for the consistent AL
-     * (pressed rows have mu = 0), mu or 0 (pressed) for the Macaulay AL, the
-     * measured value for the displacement AL.
-     */
-    std::vector<double>                  opening;
-    std::vector<AugmentedLagrangianStep> history;
-    /** Per multiplier update k: p of the solve, w_n - g after the update
-     * (the opening), alpha used (1/beta for the displacement AL), and the
-     * released flags. */
-    std::vector<std::vector<double>> p_history, mu_history, alpha_history;
-    std::vector<std::vector<bool>>   released_history;
-    bool                             converged = false;
-    /** ||pbar|| became non-finite or exceeded 1e6 x the load scale, or alpha
-     * would grow beyond max_penalty_growth x initial_alpha. */
-    bool diverged = false;
-    /**
-     * An inner Newton iteration met a released set it had already solved:
-     * Newton cycles between pieces and would never reach eps_k (the kink of
-     * the Macaulay bracket at p = 0 does this).
-     */
-    bool cycled = false;
-    /**
-     * Set with cycled when the diagonal scheme, not an inner Newton solve,
-     * came back to the state (branches, alpha, mu) of an earlier
-     * update: the multiplier iteration itself is periodic.
-     */
-    bool periodic = false;
-    /**
      * Set before solve: some rigid-body motion of the body is held by
      * unilateral contacts only (rigid_motions_held_only_by_contact > 0).
      * Then an update that finds every unilateral row released, without
      * having converged, means the loads pull the body off its obstacles:
-     * the solve stops with `floating`.
+     * the solve stops with SolveOutcome::floating.
      */
     bool held_only_by_contact = false;
-    /**
-     * Displacement AL: ||change|| fell to its round-off floor (beta times
-     * the rounding of w_n) above the tolerance: stopped, not converged.
-     */
-    bool   roundoff_limited = false;
-    double roundoff_floor   = 0;
-    bool   floating         = false;
-    /** The multiplier update during which floating was detected. */
-    unsigned int floating_update    = 0;
-    unsigned int total_newton_steps = 0;
-    double       final_norm_pbar    = 0;
-    double       tolerance_used     = 0;
 
   private:
+    /** The iteration itself; solve() sets the outcome from its flags. */
+    bool
+    iterate(const EquilibriumSystem &system,
+            NewtonStepPath          &path,
+            const double             load_scale,
+            std::ostream            &log);
+
+    /** The outcome from the flags iterate() left. */
+    void
+    set_outcome();
+
+    /** The relinearisation of the running solve, or null. */
+    RowRelinearisation *relinearisation = nullptr;
+
+    // How the last solve stopped (see SolveOutcome).
+    bool converged = false, diverged = false, cycled = false, periodic = false,
+         floating = false, roundoff_limited = false;
+
     /** The displacement AL of eq. 29 (Regularisation = displacement). */
     bool
     solve_displacement(const EquilibriumSystem &system,

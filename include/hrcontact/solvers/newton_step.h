@@ -109,6 +109,16 @@ namespace hrcontact
     virtual void
     contact_displacements(std::vector<double> &w) const;
 
+    /**
+     * A RowRelinearisation rewrote the directions and gaps of some Q rows
+     * between multiplier updates: the next solve must use them. The
+     * condensed path reads the rows at every solve and needs nothing more;
+     * the null-space path built its reduction from the initial rows and
+     * cannot follow (InputError).
+     */
+    virtual void
+    rows_changed();
+
     /** Linear solver counters (zero for the dense path). */
     LinearSolverStatistics statistics;
   };
@@ -134,6 +144,8 @@ namespace hrcontact
     void
     displacements(const std::vector<double> &contact_w,
                   dealii::Vector<double>    &u) const override;
+    void
+    rows_changed() override;
 
   private:
     const EquilibriumReduction &reduction;

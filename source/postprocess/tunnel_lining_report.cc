@@ -1,5 +1,7 @@
-#include <hrcontact/core/hr_problem.h>
+#include <deal.II/base/utilities.h>
+
 #include <hrcontact/postprocess/section_forces.h>
+#include <hrcontact/postprocess/tunnel_lining_report.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,21 +14,71 @@ namespace hrcontact
 
   template <int dim>
   void
-  HRProblem<dim>::lining_output(std::ostream &log)
+  TunnelLiningReport<dim>::declare_parameters(ParameterHandler &prm)
   {
+    prm.enter_subsection("Postprocess");
+    prm.declare_entry(
+      "Lining sections",
+      "120",
+      Patterns::Integer(2, 100000),
+      "tunnel_lining grids: number of intervals between section stations "
+      "along the mid-line (equally spaced in arc length; stations in the "
+      "short stretch around the arcs' joint are skipped). lining.csv gets N, "
+      "V, M and the displacement at each station.");
+    prm.declare_entry(
+      "Lining reference principal stresses",
+      "",
+      Patterns::Anything(),
+      "tunnel_lining grids: extremes of principal stresses to compare with, "
+      "'min of s_min : max of s_min : min of s_max : max of s_max', "
+      "expressions of the constants in the scene's stress unit (e.g. the "
+      "paper's Fig. 12 values converted). summary.txt lists them next to "
+      "ours. Empty: no comparison.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  TunnelLiningReport<dim>::parse_parameters(ParameterHandler &prm,
+                                            const Constants &)
+  {
+    prm.enter_subsection("Postprocess");
+    n_sections = prm.get_integer("Lining sections");
+    reference_principal_stresses =
+      prm.get("Lining reference principal stresses");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  std::string
+  TunnelLiningReport<dim>::skip_reason(const Results<dim> &results) const
+  {
+    return (dim == 2 && results.scene.lining) ?
+             "" :
+             "the grid is not a tunnel_lining";
+  }
+
+  template <int dim>
+  void
+  TunnelLiningReport<dim>::execute(const Results<dim> &results,
+                                   PostprocessOutput  &output)
+  {
+    Summary                 &summary = output.summary;
+    std::ostream            &log     = output.log;
+    const EquilibriumSystem &system  = results.system;
     if constexpr (dim == 2)
       {
-        const TunnelLining &lining = *scene.lining;
+        const TunnelLining &lining = *results.scene.lining;
         log << "  " << lining.describe() << '\n';
 
         // Section forces along the mid-line.
         const std::vector<SectionForce> forces =
-          compute_section_forces(spaces,
-                                 stress,
-                                 displacement,
-                                 lining.sections(output.lining_sections));
+          compute_section_forces(results.spaces,
+                                 results.stress,
+                                 results.displacement,
+                                 lining.sections(n_sections));
         write_file_atomically(
-          mpi_communicator,
+          output.communicator,
           output.directory + "/lining.csv",
           [&](std::ostream &out) {
             out << "s,part,x,y,nx,ny,thickness,N,V,M,sigma_inner,sigma_outer,"
@@ -66,7 +118,7 @@ namespace hrcontact
 
         // Principal stresses, next to the reference values if given.
         const std::array<double, 4> e =
-          principal_stress_extremes(spaces, stress);
+          principal_stress_extremes(results.spaces, results.stress);
         const char *names[4] = {"principal_min_min",
                                 "principal_min_max",
                                 "principal_max_min",
@@ -77,7 +129,7 @@ namespace hrcontact
         // bound under refinement. The same extremes without the cells within
         // one crown thickness of it converge.
         const std::array<double, 4> e_away = principal_stress_extremes(
-          spaces, stress, lining.joint_out, lining.t_c);
+          results.spaces, results.stress, lining.joint_out, lining.t_c);
         for (unsigned int k = 0; k < 4; ++k)
           summary.add(std::string(names[k]) + "_away_from_joint", e_away[k]);
         log << "  principal stresses: s_min in [" << std::setprecision(5)
@@ -85,11 +137,10 @@ namespace hrcontact
             << "]; away from the joint: s_min in [" << e_away[0] << ", "
             << e_away[1] << "], s_max in [" << e_away[2] << ", " << e_away[3]
             << "]\n";
-        if (!Utilities::trim(output.lining_reference_principal_stresses)
-               .empty())
+        if (!Utilities::trim(reference_principal_stresses).empty())
           {
             const auto parts =
-              split_and_trim(output.lining_reference_principal_stresses, ':');
+              split_and_trim(reference_principal_stresses, ':');
             if (parts.size() != 4)
               throw InputError("Postprocess/Lining reference principal "
                                "stresses: expected four values separated by "
@@ -99,7 +150,7 @@ namespace hrcontact
               {
                 const double r = evaluate_constant_expression(
                   parts[k],
-                  scene.constants,
+                  results.scene.constants,
                   "Postprocess/Lining reference principal stresses");
                 summary.add("reference_" + std::string(names[k]), r);
                 log << r
@@ -110,7 +161,7 @@ namespace hrcontact
               }
           }
 
-        if (!has_contact)
+        if (!results.contact)
           return;
         // Contact along the extrados, in arc length from the crown top.
         std::vector<std::pair<double, unsigned int>> along;
@@ -138,7 +189,8 @@ namespace hrcontact
             const double tributary =
               0.5 * ((j > 0 ? point(j).distance(point(j - 1)) : 0.) +
                      (j + 1 < nc ? point(j).distance(point(j + 1)) : 0.));
-            pressure[j] = -contact_reactions[along[j].second] / tributary;
+            pressure[j] =
+              -results.contact_reactions[along[j].second] / tributary;
             if (pressure[j] > peak)
               {
                 peak   = pressure[j];
@@ -152,13 +204,14 @@ namespace hrcontact
         unsigned int       n_zones        = 0;
         for (unsigned int j = 0; j < nc;)
           {
-            if (contact_solver.released[along[j].second])
+            if (results.contact->released[along[j].second])
               {
                 ++j;
                 continue;
               }
             unsigned int l = j;
-            while (l + 1 < nc && !contact_solver.released[along[l + 1].second])
+            while (l + 1 < nc &&
+                   !results.contact->released[along[l + 1].second])
               ++l;
             const double a =
               (j == 0) ? 0. : 0.5 * (along[j - 1].first + along[j].first);
@@ -182,7 +235,7 @@ namespace hrcontact
             << peak << " at s = " << peak_s << std::endl;
 
         write_file_atomically(
-          mpi_communicator,
+          output.communicator,
           output.directory + "/lining-contact.csv",
           [&](std::ostream &out) {
             out << "s,x,y,nx,ny,ux,uy,w_n,gap,p_n,pressure,status\n"
@@ -194,21 +247,30 @@ namespace hrcontact
                 out << along[j].first << "," << point(j)[0] << ","
                     << point(j)[1] << "," << row.combination[0].second << ","
                     << row.combination[1].second << ","
-                    << displacement[row.combination[0].first] << ","
-                    << displacement[row.combination[1].first] << ","
-                    << contact_w[k] << "," << row.value << ","
-                    << contact_reactions[k] << "," << pressure[j] << ","
-                    << (contact_solver.released[k] ? "open" : "contact")
+                    << results.displacement[row.combination[0].first] << ","
+                    << results.displacement[row.combination[1].first] << ","
+                    << results.contact_w[k] << "," << row.value << ","
+                    << results.contact_reactions[k] << "," << pressure[j] << ","
+                    << (results.contact->released[k] ? "open" : "contact")
                     << "\n";
               }
           });
       }
     else
-      (void)log;
+      {
+        (void)log;
+        (void)summary;
+        (void)system;
+      }
   }
 
-  template void
-  HRProblem<2>::lining_output(std::ostream &);
-  template void
-  HRProblem<3>::lining_output(std::ostream &);
+  template class TunnelLiningReport<2>;
+  template class TunnelLiningReport<3>;
+
+  HRCONTACT_REGISTER_POSTPROCESSOR(
+    TunnelLiningReport,
+    "tunnel lining",
+    50,
+    "tunnel_lining grids: section forces (lining.csv), extremes, extrados "
+    "contact (lining-contact.csv)")
 } // namespace hrcontact

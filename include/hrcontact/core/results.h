@@ -1,0 +1,95 @@
+#ifndef hrcontact_results_h
+#define hrcontact_results_h
+
+#include <deal.II/grid/tria.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <hrcontact/core/scene.h>
+#include <hrcontact/discretisation/dof_partition.h>
+#include <hrcontact/discretisation/equilibrium_system.h>
+#include <hrcontact/discretisation/mixed_spaces.h>
+#include <hrcontact/postprocess/summary.h>
+#include <hrcontact/solvers/contact_iteration.h>
+#include <hrcontact/solvers/newton_step.h>
+
+#include <string>
+#include <vector>
+
+namespace hrcontact
+{
+  class EquilibriumReduction;
+
+  /**
+   * What a run leaves behind, read-only for postprocessors and tests
+   * (HRProblem::results()): the scene and spaces it solved on, the rows of
+   * the equilibrium system (eq. 38), the fields, the reactions, the contact
+   * iteration's table and history, and the summary. Postprocessors add to
+   * the summary only; nothing here is changed after the solve.
+   */
+  template <int dim>
+  struct Results
+  {
+    Results(const Scene<dim>        &scene,
+            const MixedSpaces<dim>  &spaces,
+            const EquilibriumSystem &system,
+            const DofPartition      &partition)
+      : scene(scene)
+      , spaces(spaces)
+      , system(system)
+      , partition(partition)
+    {}
+
+    const Scene<dim>        &scene;
+    const MixedSpaces<dim>  &spaces;
+    const EquilibriumSystem &system;
+    const DofPartition      &partition;
+
+    const dealii::Triangulation<dim> &
+    triangulation() const
+    {
+      return spaces.dof_handler_displacement.get_triangulation();
+    }
+
+    /** The stresses s (stress dofs) and displacements u (eq. 51). */
+    dealii::Vector<double> stress, displacement;
+    /** Normal displacement w_n per Q row (g + mu after the last update). */
+    std::vector<double> contact_w;
+    /** p = Q s - q per Q row; r = H s - f_H per prescribed (H) row. */
+    std::vector<double> contact_reactions, support_reactions;
+
+    /** True when the scene has unilateral contact or constraint laws. */
+    bool has_contact = false;
+    /** Rigid-body motions only the unilateral contacts hold. */
+    unsigned int free_rigid_motions = 0;
+    /** The augmented Lagrangian's final state, history and outcome; null
+     * without contact. */
+    const ContactIteration *contact = nullptr;
+    /** The contact iteration converged (always true without contact). */
+    bool
+    converged() const
+    {
+      return !contact || contact->converged();
+    }
+
+    /** "null-space" or "condensed": the path the run took. */
+    std::string solution_path;
+    /** The dense reduction (null-space path only, else null). */
+    const EquilibriumReduction *reduction = nullptr;
+    /** Counters of the condensed path's linear solves (zero otherwise). */
+    LinearSolverStatistics linear_statistics;
+    /**
+     * Wall time of building the Newton-step path and the contact iteration
+     * (or the one solve without contact), and of one linear elastic solve
+     * when Output/Time a linear elastic solve is set.
+     */
+    double contact_solve_seconds = 0, linear_elastic_seconds = 0;
+    /** Wall time of the run's sections so far (for summary.txt). */
+    double wall_time = 0;
+
+    /** summary.txt as the postprocessors have filled it. */
+    Summary summary;
+  };
+} // namespace hrcontact
+
+#endif

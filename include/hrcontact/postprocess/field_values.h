@@ -1,0 +1,52 @@
+#ifndef hrcontact_field_values_h
+#define hrcontact_field_values_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <hrcontact/core/results.h>
+
+#include <string>
+#include <utility>
+
+namespace hrcontact
+{
+  /** The stress tensor from its independent components (MixedSpaces
+   * order). */
+  template <int dim>
+  dealii::SymmetricTensor<2, dim>
+  stress_tensor(const dealii::Vector<double> &components);
+
+  /** von Mises stress including the out-of-plane component szz in 2D. */
+  template <int dim>
+  double
+  von_mises(const dealii::SymmetricTensor<2, dim> &sigma, const double szz);
+
+  /**
+   * A displacement or stress quantity of the results at a point: ux, uy,
+   * uz, sxx, syy, szz, sxy, sxz, syz or von_mises (szz in 2D from the
+   * material's out-of-plane stress). A stress at a point shared by cells is
+   * taken from the first cell found. InputError outside the mesh.
+   */
+  template <int dim>
+  double
+  point_value(const Results<dim>       &results,
+              const dealii::Point<dim> &point,
+              const std::string        &quantity);
+
+  /**
+   * Max and L2 norms of sigma_h - sigma_ref over the mesh, each relative to
+   * the same norm of sigma_ref (Frobenius norm pointwise); the reference has
+   * one component per independent stress component.
+   */
+  template <int dim>
+  std::pair<double, double>
+  stress_error(const MixedSpaces<dim>       &spaces,
+               const dealii::Vector<double> &stress,
+               const dealii::Function<dim>  &reference);
+} // namespace hrcontact
+
+#endif

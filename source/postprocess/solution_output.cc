@@ -1,0 +1,200 @@
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <hrcontact/postprocess/field_values.h>
+#include <hrcontact/postprocess/solution_output.h>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  SolutionOutput<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Write solution",
+                      "true",
+                      Patterns::Bool(),
+                      "Write solution.vtu (displacement, stress tensor, "
+                      "principal stresses, von Mises) for ParaView.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  SolutionOutput<dim>::parse_parameters(ParameterHandler &prm,
+                                        const Constants &)
+  {
+    prm.enter_subsection("Output");
+    write = prm.get_bool("Write solution");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  std::string
+  SolutionOutput<dim>::skip_reason(const Results<dim> &) const
+  {
+    return write ? "" : "Output/Write solution = false";
+  }
+
+  namespace
+  {
+    template <int dim>
+    class StressOutput : public DataPostprocessor<dim>
+    {
+    public:
+      explicit StressOutput(const Scene<dim> &scene)
+        : scene(scene)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>> &computed_quantities) const override
+      {
+        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
+          {
+            const auto sigma    = stress_tensor<dim>(inputs.solution_values[q]);
+            Vector<double> &out = computed_quantities[q];
+            unsigned int    k   = 0;
+            for (unsigned int a = 0; a < dim; ++a)
+              for (unsigned int b = 0; b < dim; ++b)
+                out[k++] = sigma[a][b];
+            const auto ev = eigenvalues(sigma); // descending
+            for (unsigned int d = 0; d < dim; ++d)
+              out[k++] = ev[d];
+            out[k++] = von_mises<dim>(sigma, scene.out_of_plane_stress(sigma));
+            for (unsigned int c = 0; c < MixedSpaces<dim>::n_stress_components;
+                 ++c)
+              out[k++] = inputs.solution_values[q][c];
+          }
+      }
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        std::vector<std::string> names(dim * dim, "stress");
+        for (unsigned int d = 0; d < dim; ++d)
+          names.push_back("principal_stress_" + std::to_string(d + 1));
+        names.push_back("von_mises");
+        for (unsigned int c = 0; c < MixedSpaces<dim>::n_stress_components; ++c)
+          names.push_back(MixedSpaces<dim>::stress_component_name(c));
+        return names;
+      }
+
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      get_data_component_interpretation() const override
+      {
+        std::vector<DataComponentInterpretation::DataComponentInterpretation>
+          interpretation(
+            dim * dim,
+            DataComponentInterpretation::component_is_part_of_tensor);
+        interpretation.resize(dim * dim + dim + 1 +
+                                MixedSpaces<dim>::n_stress_components,
+                              DataComponentInterpretation::component_is_scalar);
+        return interpretation;
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_values;
+      }
+
+    private:
+      const Scene<dim> &scene;
+    };
+
+    template <int dim>
+    std::string
+    write_solution(const Results<dim> &results, const std::string &directory)
+    {
+      const MixedSpaces<dim> &spaces    = results.spaces;
+      const Scene<dim>       &scene     = results.scene;
+      const Vector<double>   &u         = results.displacement;
+      const Vector<double>   &s         = results.stress;
+      const DofPartition     &partition = results.partition;
+      const auto &tria    = spaces.dof_handler_displacement.get_triangulation();
+      using cell_iterator = typename Triangulation<dim>::cell_iterator;
+      using active_cell_iterator =
+        typename Triangulation<dim>::active_cell_iterator;
+      const auto &owned = partition.owned_cell;
+      auto        skip  = [&](active_cell_iterator cell) -> cell_iterator {
+        while (cell != tria.end() && !owned[cell->active_cell_index()])
+          ++cell;
+        return cell;
+      };
+
+      DataOut<dim> data_out;
+      data_out.attach_triangulation(tria);
+      if (partition.distributed())
+        data_out.set_cell_selection(
+          [&](const Triangulation<dim> &) { return skip(tria.begin_active()); },
+          [&](const Triangulation<dim> &, const cell_iterator &cell) {
+            return skip(std::next(active_cell_iterator(cell)));
+          });
+      data_out.add_data_vector(
+        spaces.dof_handler_displacement,
+        u,
+        std::vector<std::string>(dim, "displacement"),
+        std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+          dim, DataComponentInterpretation::component_is_part_of_vector));
+      StressOutput<dim> stress_output(scene);
+      data_out.add_data_vector(spaces.dof_handler_stress, s, stress_output);
+      Vector<float> subdomain(tria.n_active_cells());
+      subdomain = partition.process;
+      if (partition.distributed())
+        data_out.add_data_vector(subdomain, "subdomain");
+      data_out.build_patches();
+      if (!partition.distributed())
+        {
+          write_file_atomically(directory + "/solution.vtu",
+                                [&](std::ostream &out) {
+                                  data_out.write_vtu(out);
+                                });
+          return "solution.vtu";
+        }
+
+      auto piece = [](const unsigned int p) {
+        return "solution_" + Utilities::int_to_string(p, 4) + ".vtu";
+      };
+      write_file_atomically(directory + "/" + piece(partition.process),
+                            [&](std::ostream &out) {
+                              data_out.write_vtu(out);
+                            });
+      // The record only once every piece is complete.
+      const int ierr = MPI_Barrier(partition.communicator);
+      AssertThrowMPI(ierr);
+      std::vector<std::string> pieces;
+      for (unsigned int p = 0; p < partition.n_processes; ++p)
+        pieces.push_back(piece(p));
+      write_file_atomically(partition.communicator,
+                            directory + "/solution.pvtu",
+                            [&](std::ostream &out) {
+                              data_out.write_pvtu_record(out, pieces);
+                            });
+      return "solution.pvtu";
+    }
+
+  } // namespace
+
+  template <int dim>
+  void
+  SolutionOutput<dim>::execute(const Results<dim> &results,
+                               PostprocessOutput  &output)
+  {
+    output.mentioned_files.push_back(write_solution(results, output.directory));
+  }
+
+  template class SolutionOutput<2>;
+  template class SolutionOutput<3>;
+
+  HRCONTACT_REGISTER_POSTPROCESSOR(
+    SolutionOutput,
+    "solution",
+    30,
+    "solution.vtu (or .pvtu) with displacements and stresses for ParaView")
+} // namespace hrcontact
