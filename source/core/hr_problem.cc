@@ -1,6 +1,5 @@
 #include <deal.II/base/utilities.h>
 
-#include <hrcontact/constraints/curved_obstacle_relinearisation.h>
 #include <hrcontact/core/hr_problem.h>
 #include <hrcontact/discretisation/hr_assembler.h>
 
@@ -99,8 +98,7 @@ namespace hrcontact
         "Lagrangian needs Equilibrium reduction/Path = condensed (or "
         "automatic): the null-space path cannot leave a contact node free of "
         "both a spring and a support.");
-    const bool relinearise =
-      scene.update_curved_obstacles && !scene.curved_obstacles.empty();
+    const bool relinearise = scene.has_changing_rows();
     if (relinearise && path == "null-space")
       throw InputError(
         "Contact/Update curved obstacles = true needs Equilibrium "
@@ -211,16 +209,23 @@ namespace hrcontact
     double             load_scale = 0;
     for (unsigned int i = 0; i < system.load.size(); ++i)
       load_scale = std::max(load_scale, std::abs(system.load[i]));
-    contact_solver.set_nodal_compliance(scene.nodal_compliance(triangulation));
+    contact_solver.set_nodal_compliance(
+      scene.material->nodal_compliance(triangulation));
     r.free_rigid_motions = rigid_motions_held_only_by_contact(system);
     contact_solver.held_only_by_contact = (r.free_rigid_motions > 0);
-    if (scene.update_curved_obstacles && !scene.curved_obstacles.empty())
-      {
-        CurvedObstacleRelinearisation<dim> curved(scene, system);
-        contact_solver.solve(system, path, load_scale, curved, log);
-      }
-    else
+    // Kinds whose rows follow the configuration (curved obstacles).
+    std::vector<std::unique_ptr<RowRelinearisation>> relinearisations;
+    for (const auto &source : scene.constraints)
+      if (auto r = source->relinearisation(system))
+        relinearisations.push_back(std::move(r));
+    AssertThrow(relinearisations.size() <= 1,
+                ExcMessage("one kind of constraint rows that follow the "
+                           "configuration per scene"));
+    if (relinearisations.empty())
       contact_solver.solve(system, path, load_scale, log);
+    else
+      contact_solver.solve(
+        system, path, load_scale, *relinearisations.front(), log);
     r.contact = &contact_solver.result();
     // After the last multiplier update mu = w_n - g (pressed: mu = 0).
     for (unsigned int k = 0; k < nq; ++k)

@@ -9,6 +9,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <hrcontact/constraints/constraint_law.h>
+#include <hrcontact/constraints/constraint_source.h>
 #include <hrcontact/discretisation/hr_assembler.h>
 
 #include <algorithm>
@@ -66,14 +67,15 @@ namespace hrcontact
     const unsigned int n_u = fe_u.n_dofs_per_cell();
     const unsigned int n_s = fe_s.n_dofs_per_cell();
 
-    // E^{-1} in the stress basis: K(c, c') = T_c : E^{-1} T_c'.
+    // The compliance in the stress basis at each quadrature point:
+    // K(c, c') = T_c : C(sigma) T_c', C the material's d^2 phi^c / d sigma^2
+    // at the stress state of the point (zero before a solve).
+    const MaterialLaw<dim>              &material = *scene.material;
     FullMatrix<double>                   K(n_comp, n_comp);
     std::vector<SymmetricTensor<2, dim>> T(n_comp);
     for (unsigned int c = 0; c < n_comp; ++c)
       T[c] = MixedSpaces<dim>::stress_basis_tensor(c);
-    for (unsigned int c = 0; c < n_comp; ++c)
-      for (unsigned int d = 0; d < n_comp; ++d)
-        K(c, d) = T[c] * scene.strain_from_stress(T[d]);
+    const SymmetricTensor<2, dim> stress_state;
 
     CellBlocks blocks;
     auto      &du = blocks.displacement_dofs;
@@ -115,6 +117,12 @@ namespace hrcontact
                      "at a quadrature point).";
                 throw InputError(s.str());
               }
+            for (unsigned int c = 0; c < n_comp; ++c)
+              for (unsigned int d = 0; d < n_comp; ++d)
+                K(c, d) =
+                  T[c] * material.compliance_times(stress_state,
+                                                   T[d],
+                                                   fv_u.quadrature_point(q));
             for (unsigned int i = 0; i < n_s; ++i)
               {
                 const unsigned int ci = fe_s.system_to_component_index(i).first;
@@ -362,157 +370,40 @@ namespace hrcontact
       for (unsigned int d = 0; d < dim; ++d)
         system.node_coordinates[n][d] = node_points[n][d];
 
-    // Prescribed components.
-    std::vector<std::array<bool, dim>>   prescribed(n_nodes);
-    std::vector<std::array<double, dim>> prescribed_value(n_nodes);
-    for (auto &p : prescribed)
-      p.fill(false);
-    // Normal constraints: accumulated area-weighted face normals, and the
-    // individual unit face normals to detect corners.
-    std::vector<Tensor<1, dim>>              normal_sum(n_nodes);
-    std::vector<std::vector<Tensor<1, dim>>> face_normals(n_nodes);
-    std::vector<double>                      gap(n_nodes, 0.);
-    std::vector<bool>                        has_normal(n_nodes, false);
-    std::vector<bool> normal_is_unilateral(n_nodes, false);
-    // Two-sided stops: the boundary id of the stop at each node.
-    std::vector<int> stop_of_node(n_nodes, -1);
-    // Unilateral contact: the obstacle's normal and the gap, per node.
-    std::vector<int> obstacle_of_node(n_nodes, -1);
-    std::vector<
-      std::vector<std::tuple<types::boundary_id, Tensor<1, dim>, double>>>
-                                all_obstacles(n_nodes);
-    std::vector<Tensor<1, dim>> obstacle_normal(n_nodes);
-
-    const QGauss<dim - 1> centre(1);
-    FEFaceValues<dim>     fv_face(*spaces.fe_displacement,
+    // What the constraint kinds ask of each node, face by face.
+    std::vector<NodeConstraints<dim>> constraints(n_nodes);
+    const QGauss<dim - 1>             centre(1);
+    FEFaceValues<dim>                 fv_face(*spaces.fe_displacement,
                               centre,
                               update_normal_vectors | update_JxW_values);
-
+    BoundaryFace<dim>                 face;
     for (const auto &cell : dh_u.active_cell_iterators())
       for (const auto f : cell->face_indices())
         {
           if (!cell->face(f)->at_boundary())
             continue;
           const types::boundary_id id = cell->face(f)->boundary_id();
-
-          const auto pd = scene.prescribed_displacements.find(id);
-          if (pd != scene.prescribed_displacements.end())
-            for (const auto v : cell->face(f)->vertex_indices())
-              {
-                const unsigned int node =
-                  node_of_vertex[cell->face(f)->vertex_index(v)];
-                const Point<dim> &x = node_points[node];
-                for (unsigned int k = 0; k < pd->second.components.size(); ++k)
-                  {
-                    const unsigned int d     = pd->second.components[k];
-                    const double       value = pd->second.values->value(x, k);
-                    if (!std::isfinite(value))
-                      throw InputError(
-                        "Supports/Prescribed displacements: the value for "
-                        "boundary " +
-                        std::to_string(id) + " is not finite at " +
-                        system.describe_node(node) + ".");
-                    if (prescribed[node][d] &&
-                        std::abs(prescribed_value[node][d] - value) >
-                          1e-10 * (1 + std::abs(value)))
-                      throw InputError(
-                        "Supports/Prescribed displacements: two boundaries "
-                        "prescribe different values of component " +
-                        std::string(1, "xyz"[d]) + " at " +
-                        system.describe_node(node) + ".");
-                    prescribed[node][d]       = true;
-                    prescribed_value[node][d] = value;
-                  }
-              }
-
-          // A node touching an obstacle: one constraint per obstacle (several
-          // at a corner, eq. 11, set up below).
-          auto touch = [&](const unsigned int    node,
-                           const Tensor<1, dim> &normal,
-                           const double          node_gap) {
-            bool known = false;
-            for (const auto &[other, n, g] : all_obstacles[node])
-              known |= (other == id);
-            if (!known)
-              all_obstacles[node].emplace_back(id, normal, node_gap);
-            obstacle_of_node[node] = id;
-            obstacle_normal[node]  = normal;
-            gap[node]              = node_gap;
-          };
-          const auto ob = scene.obstacles.find(id);
-          if (ob != scene.obstacles.end())
-            for (const auto v : cell->face(f)->vertex_indices())
-              {
-                const unsigned int node =
-                  node_of_vertex[cell->face(f)->vertex_index(v)];
-                touch(node,
-                      ob->second.normal,
-                      (ob->second.point - node_points[node]) *
-                        ob->second.normal);
-              }
-          // A curved obstacle: the straight one tangent at the nearest point
-          // of its surface (the paper's linearised case).
-          const auto co = scene.curved_obstacles.find(id);
-          if (co != scene.curved_obstacles.end())
-            for (const auto v : cell->face(f)->vertex_indices())
-              {
-                const unsigned int node =
-                  node_of_vertex[cell->face(f)->vertex_index(v)];
-                const auto [surface, normal] =
-                  co->second.project(node_points[node]);
-                touch(node, normal, (surface - node_points[node]) * normal);
-              }
-
-          if (scene.stops.count(id))
-            for (const auto v : cell->face(f)->vertex_indices())
-              {
-                const unsigned int node =
-                  node_of_vertex[cell->face(f)->vertex_index(v)];
-                if (stop_of_node[node] >= 0 &&
-                    stop_of_node[node] != static_cast<int>(id))
-                  throw InputError(
-                    "Contact/Stops: " + system.describe_node(node) +
-                    " has the stops of boundaries " +
-                    std::to_string(stop_of_node[node]) + " and " +
-                    std::to_string(id) + "; one stop per node.");
-                stop_of_node[node] = id;
-              }
-
-          // Bilateral normal constraints and unilateral boundary supports
-          // share the node normal (area-weighted face normals).
-          auto       nd         = scene.normal_displacements.find(id);
-          const bool is_support = (nd == scene.normal_displacements.end());
-          if (is_support)
-            nd = scene.boundary_supports.find(id);
-          if (nd != (is_support ? scene.boundary_supports.end() :
-                                  scene.normal_displacements.end()))
+          if (std::none_of(scene.constraints.begin(),
+                           scene.constraints.end(),
+                           [id](const auto &source) {
+                             return source->acts_on(id);
+                           }))
+            continue;
+          face.boundary_id = id;
+          face.nodes.clear();
+          face.points.clear();
+          for (const auto v : cell->face(f)->vertex_indices())
             {
-              fv_face.reinit(cell, f);
-              const Tensor<1, dim> n = fv_face.normal_vector(0);
-              for (const auto v : cell->face(f)->vertex_indices())
-                {
-                  const unsigned int node =
-                    node_of_vertex[cell->face(f)->vertex_index(v)];
-                  normal_sum[node] += n * fv_face.JxW(0);
-                  face_normals[node].push_back(n);
-                  gap[node] = nd->second->value(node_points[node]);
-                  if (has_normal[node] &&
-                      normal_is_unilateral[node] != is_support)
-                    throw InputError(
-                      "Supports: " + system.describe_node(node) +
-                      " has both a bilateral normal constraint and a "
-                      "unilateral boundary support.");
-                  has_normal[node]           = true;
-                  normal_is_unilateral[node] = is_support;
-                  if (!std::isfinite(gap[node]))
-                    throw InputError(
-                      std::string(is_support ?
-                                    "Contact/Boundary supports" :
-                                    "Supports/Normal displacements") +
-                      ": the value for boundary " + std::to_string(id) +
-                      " is not finite at " + system.describe_node(node) + ".");
-                }
+              face.nodes.push_back(
+                node_of_vertex[cell->face(f)->vertex_index(v)]);
+              face.points.push_back(node_points[face.nodes.back()]);
             }
+          fv_face.reinit(cell, f);
+          face.normal  = fv_face.normal_vector(0);
+          face.measure = fv_face.JxW(0);
+          for (const auto &source : scene.constraints)
+            if (source->acts_on(id))
+              source->collect(face, system, constraints);
         }
 
     system.rows.clear();
@@ -546,16 +437,17 @@ namespace hrcontact
 
     for (unsigned int node = 0; node < n_nodes; ++node)
       {
+        const NodeConstraints<dim> &c = constraints[node];
         std::vector<Tensor<1, dim>> taken; // directions already used
         for (unsigned int d = 0; d < dim; ++d)
-          if (prescribed[node][d])
+          if (c.prescribed[d])
             {
               Tensor<1, dim> e;
               e[d] = 1.;
-              add_row(node, e, RowClass::prescribed, prescribed_value[node][d]);
+              add_row(node, e, RowClass::prescribed, c.prescribed_value[d]);
               taken.push_back(e);
             }
-        if (all_obstacles[node].size() > 1)
+        if (c.obstacles.size() > 1)
           {
             // A corner between obstacles (eq. 11): the normals n_i and free
             // directions t completing them form the node's primal basis,
@@ -563,21 +455,18 @@ namespace hrcontact
             // the nodal reaction is sum_i p_i n_i with every p_i <= 0.
             const std::string where =
               "Contact/Obstacles: " + system.describe_node(node);
-            if (has_normal[node] || stop_of_node[node] >= 0 ||
-                std::any_of(prescribed[node].begin(),
-                            prescribed[node].end(),
-                            [](bool b) { return b; }))
+            if (c.has_normal || c.own_row_source || c.any_prescribed())
               throw InputError(where +
                                " touches several obstacles and also has a "
                                "prescribed component, a normal constraint or "
                                "a stop; a corner node takes obstacles only.");
-            if (all_obstacles[node].size() > dim)
+            if (c.obstacles.size() > dim)
               throw InputError(where + " touches " +
-                               std::to_string(all_obstacles[node].size()) +
+                               std::to_string(c.obstacles.size()) +
                                " obstacles; at most " + std::to_string(dim) +
                                " can meet at a node.");
             std::vector<Tensor<1, dim>> basis, orthonormal;
-            for (const auto &[id, n, g] : all_obstacles[node])
+            for (const auto &[id, n, g] : c.obstacles)
               {
                 basis.push_back(n);
                 Tensor<1, dim> e = n;
@@ -601,74 +490,41 @@ namespace hrcontact
                 Tensor<1, dim> dual;
                 for (unsigned int d = 0; d < dim; ++d)
                   dual[d] = Pinv(d, r);
-                const bool is_obstacle = r < all_obstacles[node].size();
+                const bool is_obstacle = r < c.obstacles.size();
                 add_row(node,
                         basis[r],
                         is_obstacle ? RowClass::contact : RowClass::free,
-                        is_obstacle ? std::get<2>(all_obstacles[node][r]) : 0.,
+                        is_obstacle ? std::get<2>(c.obstacles[r]) : 0.,
                         is_obstacle,
                         &dual);
                 if (is_obstacle)
-                  system.rows.back().obstacle =
-                    std::get<0>(all_obstacles[node][r]);
+                  system.rows.back().obstacle = std::get<0>(c.obstacles[r]);
               }
             continue;
           }
-        if (stop_of_node[node] >= 0)
+        if (c.own_row_source)
           {
-            const auto       &stop  = scene.stops.at(stop_of_node[node]);
-            const std::string where = "Contact/Stops, boundary " +
-                                      std::to_string(stop_of_node[node]) +
-                                      ", " + system.describe_node(node);
-            if (has_normal[node] || obstacle_of_node[node] >= 0)
-              throw InputError(where +
-                               ": the node also has a normal constraint, an "
-                               "obstacle or a boundary support.");
+            // A kind with a row of its own at the node (a two-sided stop).
+            const OwnRow own =
+              c.own_row_source->own_row(node, node_points[node], c, system);
+            Tensor<1, dim> direction;
             for (unsigned int d = 0; d < dim; ++d)
-              if (prescribed[node][d] && std::abs(stop.direction[d]) > 1e-12)
-                throw InputError(where +
-                                 ": the stop direction has a part along the "
-                                 "prescribed displacement component " +
-                                 std::string(1, "xyz"[d]) + ".");
-            double values[6] = {0, 0, 0, 0, 0, 0};
-            for (unsigned int k = 0; k < 6; ++k)
-              if (stop.values[k])
-                {
-                  values[k] = stop.values[k]->value(node_points[node]);
-                  if (!std::isfinite(values[k]))
-                    throw InputError(where + ": a value is not finite.");
-                }
-            std::shared_ptr<const ConstraintLaw> law;
-            try
-              {
-                law = std::make_shared<TwoSidedStop>(values[0],
-                                                     values[1],
-                                                     values[2],
-                                                     values[3],
-                                                     values[4],
-                                                     values[5]);
-              }
-            catch (const InputError &e)
-              {
-                throw InputError(where + ": " + e.what());
-              }
-            add_row(node, stop.direction, RowClass::contact, 0.);
-            system.rows.back().law = law;
-            taken.push_back(stop.direction);
+              direction[d] = own.direction[d];
+            add_row(node, direction, RowClass::contact, own.value);
+            system.rows.back().law = own.law;
+            taken.push_back(direction);
           }
-        if (has_normal[node] && obstacle_of_node[node] >= 0)
+        if (c.has_normal && c.obstacle >= 0)
           throw InputError("Supports: " + system.describe_node(node) +
                            " has both a normal constraint (or boundary "
                            "support) and an obstacle.");
-        if (has_normal[node] || obstacle_of_node[node] >= 0)
+        if (c.has_normal || c.obstacle >= 0)
           {
-            const bool unilateral =
-              (obstacle_of_node[node] >= 0) || normal_is_unilateral[node];
-            const Tensor<1, dim> n =
-              (obstacle_of_node[node] >= 0) ?
-                obstacle_normal[node] :
-                normal_sum[node] / normal_sum[node].norm();
-            for (const auto &nf : face_normals[node])
+            const bool unilateral = (c.obstacle >= 0) || c.normal_is_unilateral;
+            const Tensor<1, dim> n = (c.obstacle >= 0) ?
+                                       c.obstacle_normal :
+                                       c.normal_sum / c.normal_sum.norm();
+            for (const auto &nf : c.face_normals)
               if (nf * n < std::cos(numbers::PI / 4))
                 throw InputError(
                   "Supports/Normal displacements or Contact/Boundary "
@@ -683,11 +539,11 @@ namespace hrcontact
             // takes the unit direction of n_free and the scaled gap; if n_free
             // vanishes, the prescribed values fix u.n and there is no row.
             Tensor<1, dim> n_free = n;
-            double         g      = gap[node];
+            double         g      = c.gap;
             for (unsigned int d = 0; d < dim; ++d)
-              if (prescribed[node][d])
+              if (c.prescribed[d])
                 {
-                  g -= n[d] * prescribed_value[node][d];
+                  g -= n[d] * c.prescribed_value[d];
                   n_free[d] = 0;
                 }
             if (n_free.norm() > 1e-8)
@@ -698,8 +554,8 @@ namespace hrcontact
                         RowClass::contact,
                         g / length,
                         unilateral);
-                if (obstacle_of_node[node] >= 0)
-                  system.rows.back().obstacle = obstacle_of_node[node];
+                if (c.obstacle >= 0)
+                  system.rows.back().obstacle = c.obstacle;
                 taken.push_back(n_free / length);
               }
           }

@@ -1,6 +1,7 @@
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/utilities.h>
 
+#include <hrcontact/material/linear_elasticity.h>
 #include <hrcontact/postprocess/contact_pressure.h>
 #include <hrcontact/postprocess/sorted_rows.h>
 
@@ -112,14 +113,19 @@ namespace hrcontact
       return;
     // Plane strain Hertz contact of a cylinder on a rigid plane; the half
     // model's pressed zone starts at the symmetry plane.
-    const double P       = evaluate_constant_expression(hertz_load,
+    const double P = evaluate_constant_expression(hertz_load,
                                                   results.scene.constants,
                                                   "Postprocess/Hertz load");
-    const double R       = evaluate_constant_expression(hertz_radius,
+    const double R = evaluate_constant_expression(hertz_radius,
                                                   results.scene.constants,
                                                   "Postprocess/Hertz radius");
-    const double nu      = results.scene.poisson_ratio;
-    const double E_star  = results.scene.youngs_modulus / (1 - nu * nu);
+    const auto  *elastic =
+      dynamic_cast<const LinearElasticity<dim> *>(results.scene.material.get());
+    if (!elastic)
+      throw InputError("Postprocess/Hertz load: the Hertz comparison needs "
+                       "Material/Model = linear elasticity.");
+    const double nu      = elastic->poisson_ratio();
+    const double E_star  = elastic->youngs_modulus() / (1 - nu * nu);
     const double a_hertz = std::sqrt(4 * P * R / (numbers::PI * E_star));
     const double p_hertz = 2 * P / (numbers::PI * a_hertz);
     const double a       = zone_end - zone_start;

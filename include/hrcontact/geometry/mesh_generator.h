@@ -1,0 +1,86 @@
+#ifndef hrcontact_mesh_generator_h
+#define hrcontact_mesh_generator_h
+
+#include <deal.II/grid/tria.h>
+
+#include <hrcontact/core/input.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hrcontact
+{
+  /**
+   * A grid by name (Geometry/Grid generator) from its arguments (Geometry/
+   * Grid arguments). Our own generators register themselves with
+   * HRCONTACT_REGISTER_MESH_GENERATOR; any other name is handed to deal.II's
+   * GridGenerator::generate_from_name_and_arguments. A generator is
+   * constructed from (arguments, constants) when the scene is read; it may
+   * check its arguments then or when it creates the mesh.
+   */
+  template <int dim>
+  class MeshGenerator
+  {
+  public:
+    virtual ~MeshGenerator() = default;
+
+    /** The coarse mesh, refined `refinements` times. */
+    virtual void
+    create(dealii::Triangulation<dim> &triangulation,
+           const unsigned int          refinements) const = 0;
+
+    /**
+     * Why this grid may not be distorted or rotated afterwards (empty: it
+     * may), for the error message.
+     */
+    virtual std::string
+    fixed_geometry_reason() const;
+  };
+
+  /** The name -> factory registry of MeshGenerator. */
+  template <int dim>
+  class MeshGeneratorFactory
+  {
+  public:
+    using Factory = std::function<
+      std::unique_ptr<MeshGenerator<dim>>(const std::string &arguments,
+                                          const Constants   &constants)>;
+
+    static bool
+    register_generator(const std::string &name, const Factory &factory);
+
+    /** The generator of that name, its arguments parsed; deal.II's for a
+     * name not registered here. */
+    static std::unique_ptr<MeshGenerator<dim>>
+    create(const std::string &name,
+           const std::string &arguments,
+           const Constants   &constants);
+
+  private:
+    static std::vector<std::pair<std::string, Factory>> &
+    registry();
+  };
+} // namespace hrcontact
+
+/** Register CLASSNAME<2> and CLASSNAME<3> as grid NAME; the class has a
+ * constructor taking (arguments, constants). */
+#define HRCONTACT_REGISTER_MESH_GENERATOR(classname, name)             \
+  namespace                                                            \
+  {                                                                    \
+    const bool classname##_registered_2d =                             \
+      ::hrcontact::MeshGeneratorFactory<2>::register_generator(        \
+        name,                                                          \
+        [](const std::string &arguments, const Constants &constants) { \
+          return std::make_unique<classname<2>>(arguments, constants); \
+        });                                                            \
+    const bool classname##_registered_3d =                             \
+      ::hrcontact::MeshGeneratorFactory<3>::register_generator(        \
+        name,                                                          \
+        [](const std::string &arguments, const Constants &constants) { \
+          return std::make_unique<classname<3>>(arguments, constants); \
+        });                                                            \
+  }
+
+#endif
