@@ -1,4 +1,4 @@
-// The two exact Newton-step paths (design.md section 4): the paper's
+// The two exact Newton-step paths (doc/method.md): the paper's
 // null-space reduction and the condensed sparse system must give the same
 // augmented Lagrangian history: the same alpha sequence, the same released
 // set at every multiplier update, and p equal to 1e-9 relative (lift-off and

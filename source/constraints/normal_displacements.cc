@@ -9,6 +9,91 @@ namespace hrcontact
   using namespace dealii;
 
   template <int dim>
+  BodyNormalConstraint<dim>::BodyNormalConstraint(const std::string &subsection,
+                                                  const std::string &name,
+                                                  const bool         unilateral,
+                                                  const std::string &conflict)
+    : subsection(subsection)
+    , name(name)
+    , unilateral(unilateral)
+    , conflict(conflict)
+  {}
+
+  template <int dim>
+  std::string
+  BodyNormalConstraint<dim>::entry() const
+  {
+    return subsection + "/" + name;
+  }
+
+  template <int dim>
+  bool
+  BodyNormalConstraint<dim>::acts_on(const types::boundary_id id) const
+  {
+    return values.count(id) > 0;
+  }
+
+  template <int dim>
+  bool
+  BodyNormalConstraint<dim>::parse_parameters(
+    ParameterHandler                                          &prm,
+    const Constants                                           &constants,
+    const std::vector<std::shared_ptr<ConstraintSource<dim>>> &earlier)
+  {
+    prm.enter_subsection(subsection);
+    for (const BoundaryEntry &e :
+         parse_boundary_list(prm.get(name), dim, false, entry()))
+      {
+        const std::string where =
+          entry() + ", boundary " + std::to_string(e.boundary_id);
+        require_unconstrained<dim>(e.boundary_id, where, earlier, conflict);
+        values[e.boundary_id] =
+          make_function<dim>(e.expressions, 1, constants, where);
+      }
+    prm.leave_subsection();
+    return !values.empty();
+  }
+
+  template <int dim>
+  void
+  BodyNormalConstraint<dim>::collect(
+    const BoundaryFace<dim>           &face,
+    const EquilibriumSystem           &system,
+    std::vector<NodeConstraints<dim>> &nodes) const
+  {
+    // Bilateral normal constraints and unilateral boundary supports share
+    // the node normal (area-weighted face normals).
+    const FunctionParser<dim> &value = *values.at(face.boundary_id);
+    for (unsigned int v = 0; v < face.nodes.size(); ++v)
+      {
+        const unsigned int    node = face.nodes[v];
+        NodeConstraints<dim> &c    = nodes[node];
+        c.normal_sum += face.normal * face.measure;
+        c.face_normals.push_back(face.normal);
+        c.gap = value.value(face.points[v]);
+        if (c.has_normal && c.normal_is_unilateral != unilateral)
+          throw InputError("Supports: " + system.describe_node(node) +
+                           " has both a bilateral normal constraint and a "
+                           "unilateral boundary support.");
+        c.has_normal           = true;
+        c.normal_is_unilateral = unilateral;
+        if (!std::isfinite(c.gap))
+          throw InputError(entry() + ": the value for boundary " +
+                           std::to_string(face.boundary_id) +
+                           " is not finite at " + system.describe_node(node) +
+                           ".");
+      }
+  }
+
+  template <int dim>
+  NormalDisplacements<dim>::NormalDisplacements()
+    : BodyNormalConstraint<dim>("Supports",
+                                "Normal displacements",
+                                false,
+                                "a normal constraint")
+  {}
+
+  template <int dim>
   void
   NormalDisplacements<dim>::declare_parameters(ParameterHandler &prm)
   {
@@ -27,75 +112,8 @@ namespace hrcontact
     prm.leave_subsection();
   }
 
-  template <int dim>
-  std::string
-  NormalDisplacements<dim>::entry() const
-  {
-    return "Supports/Normal displacements";
-  }
-
-  template <int dim>
-  bool
-  NormalDisplacements<dim>::acts_on(const types::boundary_id id) const
-  {
-    return values.count(id) > 0;
-  }
-
-  template <int dim>
-  bool
-  NormalDisplacements<dim>::parse_parameters(
-    ParameterHandler                                          &prm,
-    const Constants                                           &constants,
-    const std::vector<std::shared_ptr<ConstraintSource<dim>>> &earlier)
-  {
-    prm.enter_subsection("Supports");
-    for (const BoundaryEntry &e :
-         parse_boundary_list(prm.get("Normal displacements"),
-                             dim,
-                             false,
-                             "Supports/Normal displacements"))
-      {
-        const std::string where = "Supports/Normal displacements, boundary " +
-                                  std::to_string(e.boundary_id);
-        (void)earlier;
-        values[e.boundary_id] =
-          make_function<dim>(e.expressions, 1, constants, where);
-      }
-    prm.leave_subsection();
-    return !values.empty();
-  }
-
-  template <int dim>
-  void
-  NormalDisplacements<dim>::collect(
-    const BoundaryFace<dim>           &face,
-    const EquilibriumSystem           &system,
-    std::vector<NodeConstraints<dim>> &nodes) const
-  {
-    // Bilateral normal constraints and unilateral boundary supports share
-    // the node normal (area-weighted face normals).
-    const FunctionParser<dim> &value = *values.at(face.boundary_id);
-    for (unsigned int v = 0; v < face.nodes.size(); ++v)
-      {
-        const unsigned int    node = face.nodes[v];
-        NodeConstraints<dim> &c    = nodes[node];
-        c.normal_sum += face.normal * face.measure;
-        c.face_normals.push_back(face.normal);
-        c.gap = value.value(face.points[v]);
-        if (c.has_normal && c.normal_is_unilateral != false)
-          throw InputError("Supports: " + system.describe_node(node) +
-                           " has both a bilateral normal constraint and a "
-                           "unilateral boundary support.");
-        c.has_normal           = true;
-        c.normal_is_unilateral = false;
-        if (!std::isfinite(c.gap))
-          throw InputError(
-            "Supports/Normal displacements: the value for boundary " +
-            std::to_string(face.boundary_id) + " is not finite at " +
-            system.describe_node(node) + ".");
-      }
-  }
-
+  template class BodyNormalConstraint<2>;
+  template class BodyNormalConstraint<3>;
   template class NormalDisplacements<2>;
   template class NormalDisplacements<3>;
 

@@ -75,7 +75,7 @@ namespace hrcontact
     std::vector<SymmetricTensor<2, dim>> T(n_comp);
     for (unsigned int c = 0; c < n_comp; ++c)
       T[c] = MixedSpaces<dim>::stress_basis_tensor(c);
-    const SymmetricTensor<2, dim> stress_state;
+    SymmetricTensor<2, dim> sigma_q;
 
     CellBlocks blocks;
     auto      &du = blocks.displacement_dofs;
@@ -117,10 +117,17 @@ namespace hrcontact
                      "at a quadrature point).";
                 throw InputError(s.str());
               }
+            if (stress_state)
+              {
+                sigma_q = 0;
+                for (unsigned int j = 0; j < n_s; ++j)
+                  sigma_q += (*stress_state)[ds[j]] * fv_s.shape_value(j, q) *
+                             T[fe_s.system_to_component_index(j).first];
+              }
             for (unsigned int c = 0; c < n_comp; ++c)
               for (unsigned int d = 0; d < n_comp; ++d)
                 K(c, d) =
-                  T[c] * material.compliance_times(stress_state,
+                  T[c] * material.compliance_times(sigma_q,
                                                    T[d],
                                                    fv_u.quadrature_point(q));
             for (unsigned int i = 0; i < n_s; ++i)
@@ -325,18 +332,39 @@ namespace hrcontact
       throw InputError(error);
 
     if (lean)
-      {
-        const Scene<dim>       &scene_  = scene;
-        const MixedSpaces<dim> &spaces_ = spaces;
-        system.recompute_cell_blocks =
-          [&scene_,
-           &spaces_](const std::function<bool(unsigned int)>       &filter,
-                     const std::function<void(const CellBlocks &)> &worker) {
-            HRAssembler<dim>(scene_, spaces_).for_each_cell(filter, worker);
-          };
-      }
+      set_recompute(system);
     else
       system.recompute_cell_blocks = nullptr;
+  }
+
+  template <int dim>
+  void
+  HRAssembler<dim>::set_recompute(EquilibriumSystem &system) const
+  {
+    const Scene<dim>       &scene_  = scene;
+    const MixedSpaces<dim> &spaces_ = spaces;
+    system.recompute_cell_blocks =
+      [&scene_, &spaces_, state = stress_state](
+        const std::function<bool(unsigned int)>       &filter,
+        const std::function<void(const CellBlocks &)> &worker) {
+        HRAssembler<dim> assembler(scene_, spaces_);
+        assembler.stress_state = state;
+        assembler.for_each_cell(filter, worker);
+      };
+  }
+
+  template <int dim>
+  void
+  HRAssembler<dim>::refresh_flexibility(EquilibriumSystem    &system,
+                                        const Vector<double> &stress)
+  {
+    stress_state = std::make_shared<const Vector<double>>(stress);
+    for_each_cell([&](const unsigned int c) { return system.is_stored(c); },
+                  [&](const CellBlocks &b) {
+                    system.cell_flexibility[b.cell] = b.F;
+                  });
+    if (system.recompute_cell_blocks)
+      set_recompute(system);
   }
 
   template <int dim>

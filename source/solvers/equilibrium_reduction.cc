@@ -280,6 +280,37 @@ namespace hrcontact
           t[perm[i]] = t1[i];
       }
 
+    // Q R (eq. 42), row by row: (Q R)_i = sum_k Q_ik R[k, :], R[k, :] being a
+    // unit vector for s0 columns and -X[pos(k), :] for s1 columns.
+    n_q = sys.contact_rows.size();
+    QR.assign(static_cast<std::size_t>(n_q) * m, 0.);
+    a.assign(n_q, 0.);
+    for (unsigned int i = 0; i < n_q; ++i)
+      {
+        const EquilibriumRow &row = sys.rows[sys.contact_rows[i]];
+        double *const         QRi = QR.data() + static_cast<std::size_t>(i) * m;
+        for (const auto &[dof, c] : row.combination)
+          if (c != 0)
+            for (auto it = sys.B.begin(dof); it != sys.B.end(dof); ++it)
+              {
+                const unsigned int k = position[it->column()];
+                const double       v = c * it->value();
+                if (k >= n)
+                  QRi[k - n] += v;
+                else
+                  for (unsigned int j = 0; j < m; ++j)
+                    QRi[j] -= v * X[k + static_cast<std::size_t>(j) * n];
+              }
+        a[i] = sys.row_times(row, t) - sys.row_load(row);
+      }
+
+    flexibility_changed();
+  }
+
+  void
+  EquilibriumReduction::flexibility_changed()
+  {
+    const EquilibriumSystem &sys = *system;
     // M0 = R^T F R = G0 - X^T G1 with G = F R, computed column by column
     // (F is block diagonal: one small product per cell).
     std::vector<double> G0(static_cast<std::size_t>(m) * m, 0.);
@@ -341,30 +372,6 @@ namespace hrcontact
           G0[j + static_cast<std::size_t>(i) * m] = avg;
         }
     M0_factor.swap(G0);
-
-    // Q R (eq. 42), row by row: (Q R)_i = sum_k Q_ik R[k, :], R[k, :] being a
-    // unit vector for s0 columns and -X[pos(k), :] for s1 columns.
-    n_q = sys.contact_rows.size();
-    QR.assign(static_cast<std::size_t>(n_q) * m, 0.);
-    a.assign(n_q, 0.);
-    for (unsigned int i = 0; i < n_q; ++i)
-      {
-        const EquilibriumRow &row = sys.rows[sys.contact_rows[i]];
-        double *const         QRi = QR.data() + static_cast<std::size_t>(i) * m;
-        for (const auto &[dof, c] : row.combination)
-          if (c != 0)
-            for (auto it = sys.B.begin(dof); it != sys.B.end(dof); ++it)
-              {
-                const unsigned int k = position[it->column()];
-                const double       v = c * it->value();
-                if (k >= n)
-                  QRi[k - n] += v;
-                else
-                  for (unsigned int j = 0; j < m; ++j)
-                    QRi[j] -= v * X[k + static_cast<std::size_t>(j) * n];
-              }
-        a[i] = sys.row_times(row, t) - sys.row_load(row);
-      }
 
     // b0 = R^T v, v = -F t + H^T u-hat + Q^T g.
     {

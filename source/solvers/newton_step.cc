@@ -144,8 +144,21 @@ namespace hrcontact
   // ------------------------------------------------------------------------
   // Null-space path
 
-  NullSpaceStep::NullSpaceStep(const EquilibriumReduction &reduction)
+  NullSpaceStep::NullSpaceStep(EquilibriumReduction &reduction)
     : reduction(reduction)
+  {
+    prepare();
+  }
+
+  void
+  NullSpaceStep::flexibility_changed()
+  {
+    reduction.flexibility_changed();
+    prepare();
+  }
+
+  void
+  NullSpaceStep::prepare()
   {
     const unsigned int nq = reduction.n_contact_rows();
     const unsigned int m  = reduction.n_self_equilibrated();
@@ -341,10 +354,9 @@ namespace hrcontact
                   serial_partition(system.n_displacement_dofs,
                                    system.cell_stress_dofs.size()))
   {
-    const unsigned int n_u     = system.n_displacement_dofs;
-    const unsigned int n_cells = system.n_cells();
-    solver                     = settings.choose(n_u, system.dim);
-    statistics.solver          = solver;
+    const unsigned int n_u = system.n_displacement_dofs;
+    solver                 = settings.choose(n_u, system.dim);
+    statistics.solver      = solver;
     if (solver == "cg-amg" || partition.distributed())
       {
         distributed = std::make_unique<Distributed>();
@@ -359,6 +371,24 @@ namespace hrcontact
             }
       }
 
+    assemble();
+  }
+
+  void
+  CondensedStep::flexibility_changed()
+  {
+    assemble();
+    if (distributed)
+      distributed->built = false; // a new AMG hierarchy for the new K
+  }
+
+  void
+  CondensedStep::assemble()
+  {
+    const unsigned int n_u     = system.n_displacement_dofs;
+    const unsigned int n_cells = system.n_cells();
+    recovery_cells.clear();
+    recovery.clear();
     // One pass over the cells this process owns and those whose stresses
     // every step needs, from the stored blocks or recomputed (a lean
     // system): K_c = B_c F_c^{-1} B_c^T of the owned cells, kept for the

@@ -7,20 +7,22 @@
 
 #include <map>
 #include <memory>
+#include <string>
 
 namespace hrcontact
 {
   /**
-   * Supports/Normal displacements: bilateral constraints u.n = g along the
-   * body's outward normal (face normals averaged at a node), Q rows of eq.
-   * 38 held at their value.
+   * A constraint along the body's own outward normal n at each node of a
+   * boundary (area-weighted face normals averaged), with a value g per
+   * boundary (an expression in x, y (, z)): bilateral, u.n = g, or
+   * unilateral, u.n - g <= 0. The node's rows are rotated to (n, tangents)
+   * and the tangential ones stay free. The common part of
+   * NormalDisplacements and BoundarySupports.
    */
   template <int dim>
-  class NormalDisplacements : public ConstraintSource<dim>
+  class BodyNormalConstraint : public ConstraintSource<dim>
   {
   public:
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
     bool
     parse_parameters(dealii::ParameterHandler &prm,
                      const Constants          &constants,
@@ -35,10 +37,34 @@ namespace hrcontact
             const EquilibriumSystem           &system,
             std::vector<NodeConstraints<dim>> &nodes) const override;
 
+  protected:
+    /** The entry subsection/name, whether it is unilateral, and what an
+     * earlier kind on the same boundary is called in the error. */
+    BodyNormalConstraint(const std::string &subsection,
+                         const std::string &name,
+                         const bool         unilateral,
+                         const std::string &conflict);
+
   private:
+    const std::string subsection, name;
+    const bool        unilateral;
+    const std::string conflict;
     std::map<dealii::types::boundary_id,
              std::unique_ptr<dealii::FunctionParser<dim>>>
       values;
+  };
+
+  /**
+   * Supports/Normal displacements: bilateral constraints u.n = g, Q rows of
+   * eq. 38 held at their value.
+   */
+  template <int dim>
+  class NormalDisplacements : public BodyNormalConstraint<dim>
+  {
+  public:
+    NormalDisplacements();
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
   };
 } // namespace hrcontact
 

@@ -1,10 +1,14 @@
 #ifndef hrcontact_hr_assembler_h
 #define hrcontact_hr_assembler_h
 
+#include <deal.II/lac/vector.h>
+
 #include <hrcontact/core/scene.h>
 #include <hrcontact/discretisation/dof_partition.h>
 #include <hrcontact/discretisation/equilibrium_system.h>
 #include <hrcontact/discretisation/mixed_spaces.h>
+
+#include <memory>
 
 namespace hrcontact
 {
@@ -50,9 +54,26 @@ namespace hrcontact
     for_each_cell(const std::function<bool(unsigned int)>       &filter,
                   const std::function<void(const CellBlocks &)> &worker) const;
 
+    /**
+     * A material whose compliance depends on its state (MaterialLaw): F_c
+     * again for the stored cells with the material evaluated at the
+     * stresses s at each quadrature point; a lean system recomputes every
+     * other cell with the same state. Call NewtonStepPath::
+     * flexibility_changed() afterwards.
+     */
+    void
+    refresh_flexibility(EquilibriumSystem            &system,
+                        const dealii::Vector<double> &stress);
+
   private:
     const Scene<dim>       &scene;
     const MixedSpaces<dim> &spaces;
+    /** Leave this assembler (with its stress state) behind as the
+     * system's recompute_cell_blocks. */
+    void
+    set_recompute(EquilibriumSystem &system) const;
+    /** The stresses the material is evaluated at (null: zero stress). */
+    std::shared_ptr<const dealii::Vector<double>> stress_state;
   };
   /**
    * The free directions of a node: Gram-Schmidt remainders of the unit axes

@@ -113,6 +113,13 @@ namespace hrcontact
     void
     multiply_M0(const dealii::Vector<double> &x,
                 dealii::Vector<double>       &y) const;
+    /**
+     * The cells' F_c in the system changed (a material's state): compute
+     * M0 = R^T F R, its Cholesky factor and b0 again. The Gaussian reduction
+     * of C, R, Q R and a do not depend on F and stay.
+     */
+    void
+    flexibility_changed();
     /** x <- M0^{-1} x (Cholesky factor kept from initialize()). */
     void
     solve_M0(double *x, const unsigned int n_rhs = 1) const;

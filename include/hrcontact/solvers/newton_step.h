@@ -64,7 +64,7 @@ namespace hrcontact
   };
 
   /**
-   * One exact Newton step of the augmented Lagrangian (design.md section 4):
+   * One exact Newton step of the augmented Lagrangian (doc/method.md, "Two exact Newton-step paths"):
    * the maximiser of the quadratic piece of eq. 44 that the constraint laws
    * select, one ContactPiece per Q row: a held row keeps w_n = g + offset, a
    * spring row w_n - g = offset - compliance p. The two implementations give
@@ -119,6 +119,14 @@ namespace hrcontact
     virtual void
     rows_changed();
 
+    /**
+     * The cells' F_c in the system changed (a material whose compliance
+     * depends on its state, MaterialLaw; see HRAssembler::refresh_flexibility):
+     * rebuild what depends on F before the next solve.
+     */
+    virtual void
+    flexibility_changed() = 0;
+
     /** Linear solver counters (zero for the dense path). */
     LinearSolverStatistics statistics;
   };
@@ -133,7 +141,8 @@ namespace hrcontact
   class NullSpaceStep : public NewtonStepPath
   {
   public:
-    explicit NullSpaceStep(const EquilibriumReduction &reduction);
+    /** The reduction is updated by flexibility_changed(). */
+    explicit NullSpaceStep(EquilibriumReduction &reduction);
 
     using NewtonStepPath::solve;
     void
@@ -146,16 +155,23 @@ namespace hrcontact
                   dealii::Vector<double>    &u) const override;
     void
     rows_changed() override;
+    /** M0 again (EquilibriumReduction::flexibility_changed), then Z, S. */
+    void
+    flexibility_changed() override;
 
   private:
-    const EquilibriumReduction &reduction;
-    std::vector<double>         Z;
-    dealii::FullMatrix<double>  S;
-    dealii::Vector<double>      s0;
+    /** Z and S from the reduction. */
+    void
+    prepare();
+
+    EquilibriumReduction      &reduction;
+    std::vector<double>        Z;
+    dealii::FullMatrix<double> S;
+    dealii::Vector<double>     s0;
   };
 
   /**
-   * The condensed path (design.md section 4b): the stresses are eliminated
+   * The condensed path (doc/method.md): the stresses are eliminated
    * cell by cell (F is block diagonal), K = B F^{-1} B^T is a sparse SPD
    * displacement-like matrix; prescribed and pressed rows become
    * AffineConstraints (d . u = value), released rows add springs 1/alpha_i
@@ -191,8 +207,15 @@ namespace hrcontact
                   dealii::Vector<double>    &u) const override;
     void
     contact_displacements(std::vector<double> &w) const override;
+    /** K and the stress recovery again from the system's F_c. */
+    void
+    flexibility_changed() override;
 
   private:
+    /** K_c = B_c F_c^-1 B_c^T of the owned cells into K (or the Trilinos
+     * back end's cell stiffness), F_c^-1 B_c^T of the stored cells. */
+    void
+    assemble();
     /** Solve the assembled Trilinos system by CG + AMG (warm start in u). */
     void
     solve_cg_amg();
