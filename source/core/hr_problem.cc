@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <hrcontact/core/hr_problem.h>
+#include <hrcontact/discretisation/displacement_stiffness.h>
 #include <hrcontact/discretisation/hr_assembler.h>
 
 #include <algorithm>
@@ -145,6 +146,8 @@ namespace hrcontact
         log << "  one linear elastic solve (contact rows held at their gaps): "
             << r.linear_elastic_seconds << " s" << std::endl;
       }
+    if (output.time_floor)
+      time_floor(log);
     Timer                           contact_timer;
     std::unique_ptr<NewtonStepPath> path;
     {
@@ -180,6 +183,36 @@ namespace hrcontact
       if (!std::isfinite(v))
         throw InputError("Solve: the stresses are not finite; the problem is "
                          "singular or badly scaled.");
+  }
+
+  template <int dim>
+  void
+  HRProblem<dim>::time_floor(std::ostream &log)
+  {
+    // The same supports, processes, CG, AMG and tolerance; K from the
+    // displacement bilinear form. Timed from assembly to solution.
+    Results<dim>        &r     = results_;
+    const unsigned int   nq    = system.contact_rows.size();
+    LinearSolverSettings floor = linear_solver;
+    floor.solver               = "cg-amg";
+    floor.reuse_preconditioner = false;
+    Timer                            timer;
+    const DisplacementStiffness<dim> q1(scene, spaces);
+    CondensedStep                    path(system, floor, &partition, &q1);
+    std::vector<double>              p;
+    path.solve(std::vector<bool>(nq, false),
+               std::vector<double>(nq, 0.),
+               std::vector<double>(nq, 1.),
+               p);
+    r.floor_seconds    = timer.wall_time();
+    r.floor_iterations = path.statistics.iterations;
+    std::vector<double> w(nq);
+    for (unsigned int k = 0; k < nq; ++k)
+      w[k] = system.rows[system.contact_rows[k]].value;
+    path.displacements(w, r.floor_displacement);
+    log << "  Q1 floor (plain displacement solve, CG + AMG): "
+        << r.floor_seconds << " s, " << r.floor_iterations << " CG iterations"
+        << std::endl;
   }
 
   template <int dim>

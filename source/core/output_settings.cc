@@ -29,6 +29,20 @@ namespace hrcontact
       "preconditioner) and report its wall time as "
       "linear_elastic_solve_seconds beside contact_solve_seconds in "
       "summary.txt. Condensed path only; costs one extra solve.");
+    prm.declare_entry(
+      "Time the Q1 floor",
+      "false",
+      Patterns::Bool(),
+      "Benchmarks: before the contact iteration, solve the plain Q1 "
+      "displacement problem of the same mesh, processes and supports (every "
+      "contact row held at its gap), its stiffness assembled from the "
+      "displacement bilinear form int eps(u) : C eps(v) (not from the HR "
+      "blocks), with CG and the same ML AMG (rigid-body modes) and tolerance "
+      "as Linear solver. summary.txt gets q1_floor_seconds (assembly, AMG "
+      "set-up and CG), q1_floor_cg_iterations and the ratios "
+      "contact_solve_to_floor and, with Time a linear elastic solve, "
+      "elastic_solve_to_floor. Needs Material/Model = linear elasticity; "
+      "costs one extra solve.");
     prm.leave_subsection();
   }
 
@@ -39,6 +53,7 @@ namespace hrcontact
     directory         = prm.get("Output directory");
     print_timing      = prm.get_bool("Print timing");
     time_linear_solve = prm.get_bool("Time a linear elastic solve");
+    time_floor        = prm.get_bool("Time the Q1 floor");
     prm.leave_subsection();
   }
 } // namespace hrcontact

@@ -23,6 +23,18 @@ namespace hrcontact
       peak = Utilities::MPI::sum(peak, results.partition.communicator);
     output.summary.add("peak_memory_MB", peak);
     output.summary.add("wall_time", results.wall_time);
+    if (results.floor_displacement.size() > 0)
+      {
+        output.summary.add("q1_floor_seconds", results.floor_seconds);
+        output.summary.add("q1_floor_cg_iterations", results.floor_iterations);
+        output.summary.add("contact_solve_to_floor",
+                           results.contact_solve_seconds /
+                             results.floor_seconds);
+        if (results.linear_elastic_seconds > 0)
+          output.summary.add("elastic_solve_to_floor",
+                             results.linear_elastic_seconds /
+                               results.floor_seconds);
+      }
   }
 
   template class RunStatistics<2>;

@@ -13,6 +13,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <hrcontact/core/input.h>
+#include <hrcontact/discretisation/displacement_stiffness.h>
 #include <hrcontact/solvers/newton_step.h>
 
 #include <cmath>
@@ -346,9 +347,11 @@ namespace hrcontact
 
   CondensedStep::CondensedStep(const EquilibriumSystem    &system,
                                const LinearSolverSettings &settings,
-                               const DofPartition         *given_partition)
+                               const DofPartition         *given_partition,
+                               const CellStiffness        *stiffness)
     : system(system)
     , settings(settings)
+    , stiffness(stiffness)
     , partition(given_partition ?
                   *given_partition :
                   serial_partition(system.n_displacement_dofs,
@@ -408,35 +411,48 @@ namespace hrcontact
     recovery_cells.reserve(n_stored);
     recovery.reserve(n_stored);
     FullMatrix<double> Finv, R, Kc;
-    system.for_each_cell_blocks(
-      [&](const unsigned int c) {
-        return partition.owned_cell[c] || system.is_stored(c);
-      },
-      [&](const CellBlocks &b) {
-        const auto &du = b.displacement_dofs;
-        stress_recovery(b, Finv, R);
-        if (partition.owned_cell[b.cell])
-          {
-            Kc.reinit(du.size(), du.size());
-            b.B.mmult(Kc, R);
-            if (owned_cells.empty()) // every cell has as many dofs
-              {
-                owned_dofs.reserve(std::size_t(n_owned) * du.size());
-                owned_stiffness.reserve(std::size_t(n_owned) * du.size() *
-                                        du.size());
-              }
-            owned_cells.push_back(b.cell);
-            owned_dofs.insert(owned_dofs.end(), du.begin(), du.end());
-            for (unsigned int i = 0; i < du.size(); ++i)
-              for (unsigned int j = 0; j < du.size(); ++j)
-                owned_stiffness.push_back(Kc(i, j));
-          }
-        if (system.is_stored(b.cell))
-          {
-            recovery_cells.push_back(b.cell);
-            recovery.push_back(R);
-          }
-      });
+    auto               add_owned = [&](const unsigned int                          cell,
+                         const std::vector<types::global_dof_index> &du,
+                         const FullMatrix<double>                   &Kc) {
+      if (owned_cells.empty()) // every cell has as many dofs
+        {
+          owned_dofs.reserve(std::size_t(n_owned) * du.size());
+          owned_stiffness.reserve(std::size_t(n_owned) * du.size() * du.size());
+        }
+      owned_cells.push_back(cell);
+      owned_dofs.insert(owned_dofs.end(), du.begin(), du.end());
+      for (unsigned int i = 0; i < du.size(); ++i)
+        for (unsigned int j = 0; j < du.size(); ++j)
+          owned_stiffness.push_back(Kc(i, j));
+    };
+    if (stiffness)
+      {
+        // Another bilinear form: no stresses to recover.
+        recovery_complete = false;
+        stiffness->for_each_cell(
+          [&](const unsigned int c) { return partition.owned_cell[c]; },
+          add_owned);
+      }
+    else
+      system.for_each_cell_blocks(
+        [&](const unsigned int c) {
+          return partition.owned_cell[c] || system.is_stored(c);
+        },
+        [&](const CellBlocks &b) {
+          const auto &du = b.displacement_dofs;
+          stress_recovery(b, Finv, R);
+          if (partition.owned_cell[b.cell])
+            {
+              Kc.reinit(du.size(), du.size());
+              b.B.mmult(Kc, R);
+              add_owned(b.cell, du, Kc);
+            }
+          if (system.is_stored(b.cell))
+            {
+              recovery_cells.push_back(b.cell);
+              recovery.push_back(R);
+            }
+        });
     const unsigned int n_per_cell =
       owned_cells.empty() ? 0 : owned_dofs.size() / owned_cells.size();
     auto cell_dofs = [&](const unsigned int k) {

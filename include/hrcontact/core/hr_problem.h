@@ -76,6 +76,9 @@ namespace hrcontact
     /** "null-space" or "condensed", from the parameters and the size. */
     std::string
     choose_path(std::ostream &log) const;
+    /** Output/Time the Q1 floor: the plain Q1 displacement solve. */
+    void
+    time_floor(std::ostream &log);
     /** The contact iteration (or the one solve without contact). */
     void
     solve_on_path(NewtonStepPath &path, std::ostream &log);

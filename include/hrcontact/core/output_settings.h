@@ -19,6 +19,8 @@ namespace hrcontact
     bool        print_timing = true;
     /** Benchmarks: time one linear elastic solve (see declare_parameters). */
     bool time_linear_solve = false;
+    /** Benchmarks: time the plain Q1 displacement solve of the same mesh. */
+    bool time_floor = false;
   };
 } // namespace hrcontact
 

@@ -84,6 +84,14 @@ namespace hrcontact
      * when Output/Time a linear elastic solve is set.
      */
     double contact_solve_seconds = 0, linear_elastic_seconds = 0;
+    /**
+     * Output/Time the Q1 floor: wall time and CG iterations of the plain Q1
+     * displacement solve of the same mesh and supports, and its
+     * displacements (empty when not timed).
+     */
+    double                 floor_seconds    = 0;
+    unsigned int           floor_iterations = 0;
+    dealii::Vector<double> floor_displacement;
     /** Wall time of the run's sections so far (for summary.txt). */
     double wall_time = 0;
 

@@ -20,6 +20,8 @@
 
 namespace hrcontact
 {
+  class CellStiffness;
+
   /**
    * How the condensed path solves its sparse SPD systems: a sparse direct
    * solver (UMFPACK), or CG preconditioned by Trilinos ML smoothed-aggregation
@@ -64,11 +66,11 @@ namespace hrcontact
   };
 
   /**
-   * One exact Newton step of the augmented Lagrangian (doc/method.md, "Two exact Newton-step paths"):
-   * the maximiser of the quadratic piece of eq. 44 that the constraint laws
-   * select, one ContactPiece per Q row: a held row keeps w_n = g + offset, a
-   * spring row w_n - g = offset - compliance p. The two implementations give
-   * the same iterates in exact arithmetic.
+   * One exact Newton step of the augmented Lagrangian (doc/method.md, "Two
+   * exact Newton-step paths"): the maximiser of the quadratic piece of eq. 44
+   * that the constraint laws select, one ContactPiece per Q row: a held row
+   * keeps w_n = g + offset, a spring row w_n - g = offset - compliance p. The
+   * two implementations give the same iterates in exact arithmetic.
    */
   class NewtonStepPath
   {
@@ -191,9 +193,15 @@ namespace hrcontact
   class CondensedStep : public NewtonStepPath
   {
   public:
+    /**
+     * With `stiffness`, K is assembled from that bilinear form instead of B
+     * F^-1 B^T (the Q1 floor of the benchmarks); the path then gives
+     * displacements only (no stresses, and p is meaningless).
+     */
     CondensedStep(const EquilibriumSystem    &system,
                   const LinearSolverSettings &settings = LinearSolverSettings(),
-                  const DofPartition         *partition = nullptr);
+                  const DofPartition         *partition = nullptr,
+                  const CellStiffness        *stiffness = nullptr);
     ~CondensedStep() override;
 
     using NewtonStepPath::solve;
@@ -225,8 +233,10 @@ namespace hrcontact
 
     const EquilibriumSystem   &system;
     const LinearSolverSettings settings;
-    const DofPartition         partition;
-    std::string                solver;
+    /** Another bilinear form for K, or null (B F^-1 B^T). */
+    const CellStiffness *stiffness;
+    const DofPartition   partition;
+    std::string          solver;
     /** Serial direct back end: the pattern and K itself. */
     dealii::SparsityPattern      sparsity;
     dealii::SparseMatrix<double> K;

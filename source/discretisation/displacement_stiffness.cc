@@ -1,0 +1,79 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <hrcontact/discretisation/displacement_stiffness.h>
+#include <hrcontact/material/linear_elasticity.h>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  template <int dim>
+  DisplacementStiffness<dim>::DisplacementStiffness(
+    const Scene<dim>       &scene,
+    const MixedSpaces<dim> &spaces)
+    : spaces(spaces)
+  {
+    const auto *law =
+      dynamic_cast<const LinearElasticity<dim> *>(scene.material.get());
+    if (!law)
+      throw InputError("Output/Time the Q1 floor: the floor is a linear "
+                       "elastic displacement solve; it needs Material/Model "
+                       "= linear elasticity.");
+    const double E = law->youngs_modulus(), nu = law->poisson_ratio();
+    lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+    mu     = E / (2 * (1 + nu));
+    // Plane stress: sigma_zz = 0 condenses lambda to 2 lambda mu / (lambda +
+    // 2 mu).
+    if (dim == 2 && !law->is_plane_strain())
+      lambda = 2 * lambda * mu / (lambda + 2 * mu);
+  }
+
+  template <int dim>
+  void
+  DisplacementStiffness<dim>::for_each_cell(
+    const std::function<bool(unsigned int)> &filter,
+    const Worker                            &worker) const
+  {
+    const auto        &fe = *spaces.fe_displacement;
+    const QGauss<dim>  quadrature(2);
+    FEValues<dim>      fv(fe, quadrature, update_gradients | update_JxW_values);
+    const unsigned int n = fe.n_dofs_per_cell();
+    FullMatrix<double> K(n, n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<SymmetricTensor<2, dim>> eps(n);
+    std::vector<double>                  div(n);
+    for (const auto &cell :
+         spaces.dof_handler_displacement.active_cell_iterators())
+      {
+        if (!filter(cell->active_cell_index()))
+          continue;
+        fv.reinit(cell);
+        cell->get_dof_indices(dofs);
+        K = 0;
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          {
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const unsigned int   a = fe.system_to_component_index(i).first;
+                const Tensor<1, dim> g = fv.shape_grad(i, q);
+                eps[i]                 = 0;
+                for (unsigned int b = 0; b < dim; ++b)
+                  eps[i][a][b] = (a == b) ? g[a] : 0.5 * g[b];
+                div[i] = g[a];
+              }
+            // sigma = lambda tr(eps) I + 2 mu eps.
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j < n; ++j)
+                K(i, j) +=
+                  (lambda * div[i] * div[j] + 2 * mu * (eps[i] * eps[j])) *
+                  fv.JxW(q);
+          }
+        worker(cell->active_cell_index(), dofs, K);
+      }
+  }
+
+  template class DisplacementStiffness<2>;
+  template class DisplacementStiffness<3>;
+} // namespace hrcontact
