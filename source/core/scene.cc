@@ -1,7 +1,6 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
-#include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <hrcontact/core/scene.h>

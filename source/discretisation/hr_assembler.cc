@@ -31,14 +31,6 @@ namespace hrcontact
 
   template <int dim>
   void
-  HRAssembler<dim>::assemble(EquilibriumSystem &system) const
-  {
-    classify_rows(system);
-    assemble_blocks(system);
-  }
-
-  template <int dim>
-  void
   HRAssembler<dim>::for_each_cell(
     const std::function<bool(unsigned int)>       &filter,
     const std::function<void(const CellBlocks &)> &worker) const

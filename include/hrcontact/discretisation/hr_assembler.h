@@ -24,10 +24,6 @@ namespace hrcontact
   public:
     HRAssembler(const Scene<dim> &scene, const MixedSpaces<dim> &spaces);
 
-    /** Rows and every cell's blocks: classify_rows() and assemble_blocks(). */
-    void
-    assemble(EquilibriumSystem &system) const;
-
     /** The C, Q and H rows, the nodes and the dimensions of the system. */
     void
     classify_rows(EquilibriumSystem &system) const;
