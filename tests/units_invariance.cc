@@ -3,7 +3,8 @@
 // With the initial penalty given as a factor times the nodal compliance
 // (Initial penalty scaling = nodal compliance), the augmented Lagrangian
 // must take the same path in any units: the same alpha / alpha_0 sequence
-// and released sets, reactions / factor and displacements equal to 1e-9.
+// and released sets, reactions / factor equal to 1e-9 and displacements
+// to 1e-8.
 // Lift-off scene (parameters/lift-off.prm).
 
 #include "tests.h"
@@ -69,10 +70,14 @@ main()
         << hrcontact_tests::check(alpha_diff, 1e-12)
         << "\n  reactions / factor equal to 1e-9: "
         << hrcontact_tests::check(p_diff / p_max, 1e-9)
-        << "\n  displacements equal to 1e-9: "
+        // The dense reduction's round-off in the displacements depends on
+        // the CPU and OpenBLAS's threads: 1.1e-9 to 1.5e-9 at 1e-6 on a
+        // 2-core Xeon (the code of before nested iteration alike), below
+        // 1e-9 elsewhere; a units error would be of order one.
+        << "\n  displacements equal to 1e-8: "
         << hrcontact_tests::check(du.linfty_norm() /
                                     base->results().displacement.linfty_norm(),
-                                  1e-9)
+                                  1e-8)
         << std::endl;
     }
 }

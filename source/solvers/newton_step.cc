@@ -343,6 +343,15 @@ namespace hrcontact
     }
   } // namespace
 
+  struct CondensedStep::DirectFactor
+  {
+    /** Per Q row: -1 held, else the spring's compliance; its direction. */
+    std::vector<double> key;
+    /** K plus the springs, before condensation (for the right-hand side). */
+    SparseMatrix<double> matrix;
+    SparseDirectUMFPACK  factor;
+  };
+
   CondensedStep::~CondensedStep() = default;
 
   CondensedStep::CondensedStep(const EquilibriumSystem    &system,
@@ -378,8 +387,15 @@ namespace hrcontact
   }
 
   void
+  CondensedStep::rows_changed()
+  {
+    direct_factor.reset();
+  }
+
+  void
   CondensedStep::flexibility_changed()
   {
+    direct_factor.reset();
     assemble();
     if (distributed)
       distributed->built = false; // a new AMG hierarchy for the new K
@@ -736,35 +752,74 @@ namespace hrcontact
       }
     else
       {
-        SparseMatrix<double> A(sparsity);
-        A.copy_from(K);
+        // K and the springs, factorised again only when a held row or a
+        // spring's compliance changed (DirectFactor).
+        // The key: per Q row held (-1) or the spring's compliance, and its
+        // direction (rows that follow the configuration move it, and a
+        // factor of the old directions would be off by as much).
+        std::vector<double> key;
+        key.reserve(system.contact_rows.size() * (1 + system.dim));
+        for (unsigned int i = 0; i < system.contact_rows.size(); ++i)
+          {
+            const EquilibriumRow &row = system.rows[system.contact_rows[i]];
+            key.push_back(pieces[i].spring ? pieces[i].compliance : -1.);
+            for (unsigned int k = 0; k < row.combination.size(); ++k)
+              key.push_back(row.direction_component(k));
+          }
+        Timer      timer;
+        const bool refactorise = !direct_factor || direct_factor->key != key;
+        if (refactorise)
+          {
+            direct_factor.reset(); // free the old factors first
+            direct_factor           = std::make_unique<DirectFactor>();
+            direct_factor->key      = key;
+            SparseMatrix<double> &A = direct_factor->matrix;
+            A.reinit(sparsity);
+            A.copy_from(K);
+            for (const auto &[row, piece] : springs)
+              {
+                spring(*row, *piece, spring_matrix, spring_force);
+                for (unsigned int a = 0; a < row->combination.size(); ++a)
+                  for (unsigned int b = 0; b < row->combination.size(); ++b)
+                    A.add(row->combination[a].first,
+                          row->combination[b].first,
+                          spring_matrix(a, b));
+              }
+            SparseMatrix<double> condensed(sparsity);
+            condensed.copy_from(A);
+            constraints.condense(condensed);
+            try
+              {
+                direct_factor->factor.initialize(condensed);
+              }
+            catch (const std::exception &)
+              {
+                direct_factor.reset();
+                throw InputError(singular_stiffness_message);
+              }
+            ++statistics.preconditioner_setups;
+            statistics.setup_seconds += timer.wall_time();
+          }
+        // u = u_c + v: u_c carries the inhomogeneities (the held values),
+        // v solves the homogeneously constrained system with the right-hand
+        // side f + spring forces - A u_c, condensed like the matrix.
         Vector<double> rhs = system.load;
         for (const auto &[row, piece] : springs)
           {
             spring(*row, *piece, spring_matrix, spring_force);
             for (unsigned int a = 0; a < row->combination.size(); ++a)
-              {
-                rhs[row->combination[a].first] += spring_force[a];
-                for (unsigned int b = 0; b < row->combination.size(); ++b)
-                  A.add(row->combination[a].first,
-                        row->combination[b].first,
-                        spring_matrix(a, b));
-              }
+              rhs[row->combination[a].first] += spring_force[a];
           }
-        constraints.condense(A, rhs);
-        Timer               timer;
-        SparseDirectUMFPACK direct;
-        try
-          {
-            direct.initialize(A);
-          }
-        catch (const std::exception &)
-          {
-            throw InputError(singular_stiffness_message);
-          }
-        statistics.setup_seconds += timer.wall_time();
+        Vector<double> u_c(n_u), r(n_u);
+        constraints.distribute(u_c);
+        direct_factor->matrix.residual(r, u_c, rhs);
+        for (const auto &line : constraints.get_lines())
+          for (const auto &[dof, coefficient] : line.entries)
+            r[dof] += coefficient * r[line.index];
+        for (const auto &line : constraints.get_lines())
+          r[line.index] = 0;
         u.reinit(n_u);
-        direct.vmult(u, rhs);
+        direct_factor->factor.vmult(u, r);
         constraints.distribute(u);
         statistics.solve_seconds += timer.wall_time();
       }

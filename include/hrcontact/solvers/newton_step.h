@@ -60,7 +60,8 @@ namespace hrcontact
     unsigned int iterations            = 0;
     unsigned int preconditioner_setups = 0;
     /** UMFPACK factorisations; AMG set-ups and, for the Trilinos back end,
-     * the assembly of the distributed matrix. */
+     * the assembly of the distributed matrix. (preconditioner_setups counts
+     * the factorisations of the serial direct back end.) */
     double setup_seconds = 0;
     double solve_seconds = 0;
   };
@@ -114,9 +115,9 @@ namespace hrcontact
     /**
      * A RowRelinearisation rewrote the directions and gaps of some Q rows
      * between multiplier updates: the next solve must use them. The
-     * condensed path reads the rows at every solve and needs nothing more;
-     * the null-space path built its reduction from the initial rows and
-     * cannot follow (InputError).
+     * condensed path reads the rows at every solve and only drops a kept
+     * factorisation; the null-space path built its reduction from the initial
+     * rows and cannot follow (InputError).
      */
     virtual void
     rows_changed();
@@ -218,6 +219,9 @@ namespace hrcontact
     /** K and the stress recovery again from the system's F_c. */
     void
     flexibility_changed() override;
+    /** The rows' directions moved: a kept factorisation no longer fits. */
+    void
+    rows_changed() override;
 
   private:
     /** K_c = B_c F_c^-1 B_c^T of the owned cells into K (or the Trilinos
@@ -254,6 +258,15 @@ namespace hrcontact
     /** Trilinos back end (kept between Newton steps). */
     struct Distributed;
     std::unique_ptr<Distributed> distributed;
+    /**
+     * Serial direct back end: the factorisation of the last condensed K,
+     * kept while the held rows and the springs' compliances stay the same.
+     * A multiplier update that changes no branch only moves the anchors
+     * (g + offset): the right-hand side, not K, so the next step costs a
+     * forward and back substitution instead of a factorisation.
+     */
+    struct DirectFactor;
+    std::unique_ptr<DirectFactor> direct_factor;
   };
 } // namespace hrcontact
 
