@@ -22,6 +22,8 @@ main()
                                  "impossible-tunnel",
                                  "support-and-constraint",
                                  "displacement-al-null-space",
+                                 "nested-too-deep",
+                                 "nested-malformed",
                                  "no-such-file"})
     {
       std::filesystem::remove_all("should-not-exist");

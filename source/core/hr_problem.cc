@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <sstream>
 
 namespace hrcontact
 {
@@ -24,11 +25,13 @@ namespace hrcontact
     AugmentedLagrangianSolver::declare_parameters(prm);
     PostprocessorManager<dim>::declare_parameters(prm);
     OutputSettings::declare_parameters(prm);
+    NestedIterationSettings::declare_parameters(prm);
   }
 
   template <int dim>
   HRProblem<dim>::HRProblem(ParameterHandler &prm, const MPI_Comm communicator)
     : mpi_communicator(communicator)
+    , parameters(prm)
     , results_(scene, spaces, system, partition)
     , timer(std::cout, TimerOutput::never, TimerOutput::wall_times)
   {
@@ -39,6 +42,7 @@ namespace hrcontact
     contact_solver.parse_parameters(prm, scene.constants);
     postprocessors.parse_parameters(prm, scene.constants);
     output.parse_parameters(prm);
+    nested.parse_parameters(prm);
   }
 
   template <int dim>
@@ -148,7 +152,8 @@ namespace hrcontact
       }
     if (output.time_floor)
       time_floor(log);
-    Timer                           contact_timer;
+    Timer contact_timer;
+    start_from_coarser_level(r.solution_path, log);
     std::unique_ptr<NewtonStepPath> path;
     {
       TimerOutput::Scope t(timer, "equilibrium reduction");
@@ -213,6 +218,113 @@ namespace hrcontact
     log << "  Q1 floor (plain displacement solve, CG + AMG): "
         << r.floor_seconds << " s, " << r.floor_iterations << " CG iterations"
         << std::endl;
+  }
+
+  template <int dim>
+  void
+  HRProblem<dim>::start_from_coarser_level(const std::string &path_name,
+                                           std::ostream      &log)
+  {
+    Results<dim> &r = results_;
+    r.coarse_levels.clear();
+    bool has_contact = false;
+    for (const unsigned int row : system.contact_rows)
+      has_contact |= system.rows[row].unilateral || bool(system.rows[row].law);
+    using Regularisation = AugmentedLagrangianSolver::Regularisation;
+    const bool carries_state =
+      (contact_solver.regularisation == Regularisation::consistent ||
+       contact_solver.regularisation == Regularisation::macaulay);
+    const bool applies = has_contact && path_name == "condensed" &&
+                         carries_state && !scene.has_changing_rows();
+    const unsigned int levels = nested.levels(scene.global_refinements,
+                                              system.n_displacement_dofs,
+                                              dim,
+                                              applies);
+    if (levels == 0)
+      return;
+    if (!has_contact)
+      return; // nothing to carry: one linear solve
+    if (!carries_state)
+      throw InputError(
+        "Nested iteration/Coarse levels: the pure penalty and the "
+        "displacement augmented Lagrangian have no multipliers to carry to "
+        "the next level; set Coarse levels = 0 (or automatic).");
+    if (scene.has_changing_rows())
+      throw InputError(
+        "Nested iteration/Coarse levels: curved obstacles that follow the "
+        "configuration (Contact/Update curved obstacles) change their rows "
+        "between levels; set Coarse levels = 0 (or automatic).");
+    if (levels > scene.global_refinements)
+      throw InputError("Nested iteration/Coarse levels = " +
+                       std::to_string(levels) + " needs at least as many " +
+                       "Geometry/Global refinements (the scene has " +
+                       std::to_string(scene.global_refinements) + ").");
+
+    // The coarser level: the same scene with one refinement fewer, on the
+    // same path and processes, nested further itself; no timing extras.
+    Timer          timer;
+    HRProblem<dim> coarse(parameters, mpi_communicator);
+    coarse.scene.global_refinements = scene.global_refinements - 1;
+    coarse.nested.coarse_levels     = levels - 1;
+    coarse.reduction.path           = path_name;
+    coarse.output.time_floor        = false;
+    coarse.output.time_linear_solve = false;
+    std::ostringstream coarse_log;
+    bool               solved = false;
+    std::string        failure;
+    try
+      {
+        coarse.solve(coarse_log);
+        solved = coarse.results().converged();
+        if (!solved)
+          failure = coarse.contact_solver.outcome_message(
+            coarse.results().free_rigid_motions);
+      }
+    catch (const std::exception &e)
+      {
+        failure = e.what();
+      }
+    r.coarse_levels = coarse.results().coarse_levels;
+    typename Results<dim>::CoarseLevel level;
+    level.global_refinements = coarse.scene.global_refinements;
+    level.displacement_dofs  = coarse.system.n_displacement_dofs;
+    if (const ContactIteration *c = coarse.results().contact)
+      {
+        level.updates      = c->history.size();
+        level.newton_steps = c->total_newton_steps;
+      }
+    level.linear_solves = coarse.results().linear_statistics.solves;
+    level.converged     = solved;
+    level.seconds       = timer.wall_time();
+    r.coarse_levels.push_back(level);
+    // The coarser levels' own lines first (coarsest first).
+    {
+      std::istringstream lines(coarse_log.str());
+      for (std::string line; std::getline(lines, line);)
+        if (line.rfind("  nested iteration, level", 0) == 0)
+          log << line << '\n';
+    }
+    log << "  nested iteration, level of " << level.global_refinements
+        << " refinements: " << level.displacement_dofs << " dofs, "
+        << level.updates << " updates, " << level.newton_steps
+        << " Newton steps, " << std::setprecision(3) << level.seconds << " s"
+        << (solved ? "" :
+                     " (did not converge; the next level starts from "
+                     "the trial solution: " +
+                       failure + ")")
+        << std::endl;
+    if (!solved)
+      return;
+    // The nodal compliance of the finer mesh against the coarser one (2D:
+    // the same; 3D: twice), and reactions per tributary area.
+    const double compliance_scale =
+      scene.material->nodal_compliance(triangulation) /
+      coarse.scene.material->nodal_compliance(coarse.triangulation);
+    contact_solver.start_from(transfer_contact_state(coarse.system,
+                                                     *coarse.results().contact,
+                                                     system,
+                                                     std::pow(2., 1. - dim),
+                                                     compliance_scale));
   }
 
   template <int dim>
@@ -322,6 +434,21 @@ namespace hrcontact
     summary.add("iterations", r.contact ? r.contact->history.size() : 0);
     summary.add("newton_steps", r.contact ? r.contact->total_newton_steps : 0);
     summary.add("converged", r.converged() ? "true" : "false");
+    if (!r.coarse_levels.empty())
+      {
+        unsigned int newton = 0, solves = 0;
+        double       seconds = 0;
+        for (const auto &level : r.coarse_levels)
+          {
+            newton += level.newton_steps;
+            solves += level.linear_solves;
+            seconds += level.seconds;
+          }
+        summary.add("nested_coarse_levels", r.coarse_levels.size());
+        summary.add("coarse_level_newton_steps", newton);
+        summary.add("coarse_level_linear_solves", solves);
+        summary.add("coarse_level_seconds", seconds);
+      }
   }
 
   template <int dim>

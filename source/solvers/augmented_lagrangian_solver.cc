@@ -295,6 +295,18 @@ namespace hrcontact
     return eps_k;
   }
 
+  void
+  AugmentedLagrangianSolver::start_from(const ContactStart &s)
+  {
+    if (regularisation == Regularisation::pure_penalty ||
+        regularisation == Regularisation::displacement)
+      throw InputError("Augmented Lagrangian: the pure penalty and the "
+                       "displacement augmented Lagrangian cannot start from a "
+                       "carried state (nested iteration).");
+    start     = s;
+    has_start = true;
+  }
+
   bool
   AugmentedLagrangianSolver::solve(const EquilibriumSystem &system,
                                    NewtonStepPath          &path,
@@ -465,17 +477,40 @@ namespace hrcontact
     roundoff_limited   = false;
     roundoff_floor     = 0;
 
-    // Step 0: trial solution, every constraint bilateral with w_n = g.
+    // Step 0: trial solution, every constraint bilateral with w_n = g; or
+    // the carried state of a coarser level (start_from): its multipliers and
+    // compliances, and the pieces its reactions select.
     pieces.resize(nq);
-    for (unsigned int i = 0; i < nq; ++i)
-      pieces[i] = law[i]->trial_piece();
+    const bool started = has_start;
+    has_start          = false;
+    if (started)
+      {
+        AssertThrow(start.fits(system),
+                    ExcMessage("the carried contact state does not fit the "
+                               "rows of this system"));
+        for (unsigned int i = 0; i < nq; ++i)
+          if (law[i]->has_multiplier())
+            {
+              mu[i]     = start.mu[i];
+              alpha[i]  = (start.alpha[i] > 0) ? start.alpha[i] : initial_alpha;
+              pieces[i] = law[i]->piece(start.p[i], mu[i], alpha[i]);
+            }
+          else
+            pieces[i] = law[i]->trial_piece();
+      }
+    else
+      for (unsigned int i = 0; i < nq; ++i)
+        pieces[i] = law[i]->trial_piece();
     path.solve(pieces, p);
 
     double scale = std::abs(load_scale);
     for (unsigned int i = 0; i < nq; ++i)
       scale = std::max(scale, std::abs(p[i]));
-    tolerance_used = std::max(absolute_tolerance, relative_tolerance * scale);
-    force_scale    = std::max(scale, 1e-300);
+    if (started)
+      scale = std::max(scale, start.tolerance_scale);
+    tolerance_scale = scale;
+    tolerance_used  = std::max(absolute_tolerance, relative_tolerance * scale);
+    force_scale     = std::max(scale, 1e-300);
 
     const bool pure_penalty = (regularisation == Regularisation::pure_penalty);
     log << "  augmented Lagrangian ("
@@ -493,8 +528,10 @@ namespace hrcontact
       log << " (" << initial_penalty
           << (regularisation == Regularisation::displacement ? " / " : " x ")
           << "nodal compliance " << nodal_compliance << ")";
-    log << ", tolerance " << std::setprecision(3) << tolerance_used
-        << std::endl;
+    log << ", tolerance " << std::setprecision(3) << tolerance_used;
+    if (started)
+      log << ", started from the coarser level's state";
+    log << std::endl;
 
     if (regularisation == Regularisation::displacement)
       {
@@ -512,6 +549,8 @@ namespace hrcontact
     // relation w - g there: the contact force term that solve balanced.
     std::vector<ContactPiece> solved = pieces;
     std::vector<double>       balanced(nq, 0.);
+    for (unsigned int i = 0; i < nq; ++i)
+      balanced[i] = solved[i].relation(p[i]);
 
     std::vector<double> pbar(nq, 0.), pbar_previous(nq, 0.);
     double              norm_previous    = std::numeric_limits<double>::max();
@@ -527,136 +566,158 @@ namespace hrcontact
 
     for (unsigned int k = 1;; ++k)
       {
-        // pbar with the multipliers and compliances the solve used.
-        for (unsigned int i = 0; i < nq; ++i)
-          pbar[i] = law[i]->has_multiplier() ?
-                      law[i]->residual(p[i], mu[i], alpha[i]) :
-                      0.;
-        const double norm = norm_of(pbar);
-
-        unsigned int changes = 0;
-        for (unsigned int i = 0; i < nq; ++i)
+        // A carried start (start_from) begins with Newton steps on its own
+        // multipliers and compliances: its first solve is not a trial whose
+        // reactions could update the multipliers.
+        if (!(started && k == 1))
           {
-            const ContactPiece current = law[i]->piece(p[i], mu[i], alpha[i]);
-            changes += (current.branch != pieces[i].branch);
-            pieces[i]   = current;
-            released[i] = law[i]->is_free(current.branch);
-          }
+            // pbar with the multipliers and compliances the solve used.
+            for (unsigned int i = 0; i < nq; ++i)
+              pbar[i] = law[i]->has_multiplier() ?
+                          law[i]->residual(p[i], mu[i], alpha[i]) :
+                          0.;
+            const double norm = norm_of(pbar);
 
-        // Step 4: multiplier update (eq. 48), mu <- mu - alpha pbar = dL/dp;
-        // afterwards mu = w_n - g. The pure penalty keeps mu = 0. The
-        // diagonal scheme updates with the piece its single Newton step
-        // solved (ConstraintLaw::multiplier_after_step): a row held there
-        // (at w_n = g + offset) takes that offset,
-        // since p of a held row says nothing yet about how far it moves:
-        // updating mu by its reaction would guess a displacement that the
-        // next step undoes, and the set then cycles (measured on lift-off).
-        if (!pure_penalty)
-          for (unsigned int i = 0; i < nq; ++i)
-            if (law[i]->has_multiplier())
-              mu[i] = diagonal ? law[i]->multiplier_after_step(solved[i],
-                                                               p[i],
-                                                               mu[i],
-                                                               alpha[i]) :
-                                 mu[i] - alpha[i] * pbar[i];
-        for (unsigned int i = 0; i < nq; ++i)
-          // w_n - g: the updated multiplier for a consistent law; released
-          // rows of the pure penalty are springs anchored at the gap (mu =
-          // 0), so they open by -alpha p.
-          opening[i] = pure_penalty ? pieces[i].relation(p[i]) :
-                                      law[i]->opening(pieces[i], p[i], mu[i]);
-
-        record(k, newton_steps, eps_k, norm, changes, timer.wall_time(), log);
-
-        // Step 6: convergence test. The pure penalty is done once the
-        // inner solve has reached its exact piece (its own answer, with the
-        // tension of the released springs as its error). The diagonal scheme
-        // also needs the piece at p to be the one its step solved: else p
-        // satisfies another relation, and a small pbar (a stop held at the
-        // estimate mu) says nothing about w.
-        bool same_pieces = true;
-        for (unsigned int i = 0; i < nq; ++i)
-          same_pieces &= (pieces[i].branch == solved[i].branch);
-        if (pure_penalty ? (k > 1 && last_inner_exact) :
-                           (norm < tolerance_used &&
-                            (!diagonal || same_pieces) && !geometry_changed))
-          {
-            converged = true;
-            break;
-          }
-        if (k >= max_updates)
-          break;
-        // The diagonal scheme is a fixed-point map of (mu, alpha): an update
-        // that reproduces the multipliers, penalties and branches of an
-        // earlier one (to round-off) means it runs in a cycle (measured: a
-        // period of 6 on the bridge stops at alpha_0 = 1e4 c_h).
-        if (diagonal)
-          {
-            std::vector<unsigned int> branches(nq);
-            double                    mu_scale = 0;
+            unsigned int changes = 0;
             for (unsigned int i = 0; i < nq; ++i)
               {
-                branches[i] = pieces[i].branch;
-                mu_scale    = std::max(mu_scale, std::abs(mu[i]));
+                const ContactPiece current =
+                  law[i]->piece(p[i], mu[i], alpha[i]);
+                changes += (current.branch != pieces[i].branch);
+                pieces[i]   = current;
+                released[i] = law[i]->is_free(current.branch);
               }
-            for (const auto &[b, a, m] : visited)
-              if (b == branches && a == alpha)
-                {
-                  double difference = 0;
-                  for (unsigned int i = 0; i < nq; ++i)
-                    difference = std::max(difference, std::abs(m[i] - mu[i]));
-                  periodic |= (difference <= 1e-12 * mu_scale);
-                }
-            if (periodic)
+
+            // Step 4: multiplier update (eq. 48), mu <- mu - alpha pbar =
+            // dL/dp; afterwards mu = w_n - g. The pure penalty keeps mu = 0.
+            // The diagonal scheme updates with the piece its single Newton step
+            // solved (ConstraintLaw::multiplier_after_step): a row held there
+            // (at w_n = g + offset) takes that offset,
+            // since p of a held row says nothing yet about how far it moves:
+            // updating mu by its reaction would guess a displacement that the
+            // next step undoes, and the set then cycles (measured on lift-off).
+            if (!pure_penalty)
+              for (unsigned int i = 0; i < nq; ++i)
+                if (law[i]->has_multiplier())
+                  mu[i] = diagonal ? law[i]->multiplier_after_step(solved[i],
+                                                                   p[i],
+                                                                   mu[i],
+                                                                   alpha[i]) :
+                                     mu[i] - alpha[i] * pbar[i];
+            for (unsigned int i = 0; i < nq; ++i)
+              // w_n - g: the updated multiplier for a consistent law; released
+              // rows of the pure penalty are springs anchored at the gap (mu =
+              // 0), so they open by -alpha p.
+              opening[i] = pure_penalty ?
+                             pieces[i].relation(p[i]) :
+                             law[i]->opening(pieces[i], p[i], mu[i]);
+
+            record(history.size() + 1,
+                   newton_steps,
+                   eps_k,
+                   norm,
+                   changes,
+                   timer.wall_time(),
+                   log);
+            // The number of this update (k, or k - 1 after a carried start).
+            const unsigned int update = history.size();
+
+            // Step 6: convergence test. The pure penalty is done once the
+            // inner solve has reached its exact piece (its own answer, with the
+            // tension of the released springs as its error). The diagonal
+            // scheme also needs the piece at p to be the one its step solved:
+            // else p satisfies another relation, and a small pbar (a stop held
+            // at the estimate mu) says nothing about w.
+            bool same_pieces = true;
+            for (unsigned int i = 0; i < nq; ++i)
+              same_pieces &= (pieces[i].branch == solved[i].branch);
+            if (pure_penalty ?
+                  (update > 1 && last_inner_exact) :
+                  (norm < tolerance_used && (!diagonal || same_pieces) &&
+                   !geometry_changed))
               {
-                cycled = true;
+                converged = true;
                 break;
               }
-            visited.emplace_back(branches, alpha, mu);
-          }
-        // Floating: every row with a multiplier on its free branch and none
-        // holding (a released row of the consistent AL may still carry
-        // compression).
-        {
-          bool all_free = true, none_holds = true;
-          for (unsigned int i = 0; i < nq; ++i)
-            {
-              if (law[i]->has_multiplier())
-                all_free &= released[i];
-              none_holds &= !law[i]->holds(p[i]);
-            }
-          if (held_only_by_contact && all_free && none_holds)
-            {
-              floating        = true;
-              floating_update = k;
+            if (update >= max_updates)
               break;
+            // The diagonal scheme is a fixed-point map of (mu, alpha): an
+            // update that reproduces the multipliers, penalties and branches of
+            // an earlier one (to round-off) means it runs in a cycle (measured:
+            // a period of 6 on the bridge stops at alpha_0 = 1e4 c_h).
+            if (diagonal)
+              {
+                std::vector<unsigned int> branches(nq);
+                double                    mu_scale = 0;
+                for (unsigned int i = 0; i < nq; ++i)
+                  {
+                    branches[i] = pieces[i].branch;
+                    mu_scale    = std::max(mu_scale, std::abs(mu[i]));
+                  }
+                for (const auto &[b, a, m] : visited)
+                  if (b == branches && a == alpha)
+                    {
+                      double difference = 0;
+                      for (unsigned int i = 0; i < nq; ++i)
+                        difference =
+                          std::max(difference, std::abs(m[i] - mu[i]));
+                      periodic |= (difference <= 1e-12 * mu_scale);
+                    }
+                if (periodic)
+                  {
+                    cycled = true;
+                    break;
+                  }
+                visited.emplace_back(branches, alpha, mu);
+              }
+            // Floating: every row with a multiplier on its free branch and none
+            // holding (a released row of the consistent AL may still carry
+            // compression).
+            {
+              bool all_free = true, none_holds = true;
+              for (unsigned int i = 0; i < nq; ++i)
+                {
+                  if (law[i]->has_multiplier())
+                    all_free &= released[i];
+                  none_holds &= !law[i]->holds(p[i]);
+                }
+              if (held_only_by_contact && all_free && none_holds)
+                {
+                  floating        = true;
+                  floating_update = update;
+                  break;
+                }
             }
-        }
-        // A released spring far softer than the mesh (alpha much larger than
-        // the nodal compliance) leaves the body all but unsupported: the
-        // solves lose every digit and ||pbar|| explodes. Stop, do not iterate
-        // on garbage.
-        if (!std::isfinite(norm) || norm > 1e6 * force_scale)
-          {
-            diverged = true;
-            break;
+            // A released spring far softer than the mesh (alpha much larger
+            // than the nodal compliance) leaves the body all but unsupported:
+            // the solves lose every digit and ||pbar|| explodes. Stop, do not
+            // iterate on garbage.
+            if (!std::isfinite(norm) || norm > 1e6 * force_scale)
+              {
+                diverged = true;
+                break;
+              }
+
+            // Step 5: penalty update (eq. 49), within the allowed growth.
+            // The diagonal scheme holds the penalty while the released set
+            // still changes: ||pbar|| then jumps with the set, not with a slow
+            // multiplier iteration.
+            if (update > 1 && !pure_penalty && !(diagonal && changes > 0) &&
+                !update_penalty(alpha,
+                                pbar,
+                                pbar_previous,
+                                norm,
+                                norm_previous,
+                                initial_alpha))
+              break;
+            norm_previous = norm;
+            pbar_previous = pbar;
+
+            eps_k = pure_penalty ? 0. : // solve the piece exactly
+                                   inner_tolerance(norm, eps_previous);
+            geometry_changed =
+              relinearisation && relinearisation->relinearise(path, opening);
           }
-
-        // Step 5: penalty update (eq. 49), within the allowed growth.
-        // The diagonal scheme holds the penalty while the released set still
-        // changes: ||pbar|| then jumps with the set, not with a slow
-        // multiplier iteration.
-        if (k > 1 && !pure_penalty && !(diagonal && changes > 0) &&
-            !update_penalty(
-              alpha, pbar, pbar_previous, norm, norm_previous, initial_alpha))
-          break;
-        norm_previous = norm;
-        pbar_previous = pbar;
-
-        eps_k = pure_penalty ? 0. : // solve the piece exactly
-                               inner_tolerance(norm, eps_previous);
-        geometry_changed =
-          relinearisation && relinearisation->relinearise(path, opening);
 
         // Step 3: Newton steps until the gradient, in contact coordinates
         // e = (w - g of the piece at p) - balanced, falls by eps_k (the

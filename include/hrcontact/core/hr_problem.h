@@ -15,6 +15,7 @@
 #include <hrcontact/postprocess/postprocessor.h>
 #include <hrcontact/solvers/augmented_lagrangian_solver.h>
 #include <hrcontact/solvers/equilibrium_reduction.h>
+#include <hrcontact/solvers/nested_iteration.h>
 #include <hrcontact/solvers/newton_step.h>
 
 #include <memory>
@@ -79,6 +80,15 @@ namespace hrcontact
     /** Output/Time the Q1 floor: the plain Q1 displacement solve. */
     void
     time_floor(std::ostream &log);
+    /**
+     * Nested iteration (NestedIterationSettings): solve the scene with one
+     * global refinement fewer (itself nested further as asked), record its
+     * levels and hand its converged state to the contact solver. Nothing
+     * when no coarser level is asked for; a coarser level that fails is
+     * reported and the fine level starts from the trial solution.
+     */
+    void
+    start_from_coarser_level(const std::string &path_name, std::ostream &log);
     /** The contact iteration (or the one solve without contact). */
     void
     solve_on_path(NewtonStepPath &path, std::ostream &log);
@@ -90,6 +100,8 @@ namespace hrcontact
     summarise_run();
 
     MPI_Comm mpi_communicator;
+    /** The parameters, for the coarser levels of the nested iteration. */
+    dealii::ParameterHandler &parameters;
     /** Declared before the spaces, whose DoFHandlers refer to it. */
     dealii::Triangulation<dim> triangulation;
     Scene<dim>                 scene;
@@ -99,6 +111,7 @@ namespace hrcontact
     AugmentedLagrangianSolver  contact_solver;
     PostprocessorManager<dim>  postprocessors;
     OutputSettings             output;
+    NestedIterationSettings    nested;
     EquilibriumSystem          system;
     /** The p4est partition of the displacement dofs and cells. */
     DofPartition        partition;

@@ -92,6 +92,19 @@ namespace hrcontact
     double                 floor_seconds    = 0;
     unsigned int           floor_iterations = 0;
     dealii::Vector<double> floor_displacement;
+    /**
+     * The coarser levels the nested iteration solved first (coarsest
+     * first; empty without nested iteration). Their time is part of
+     * contact_solve_seconds.
+     */
+    struct CoarseLevel
+    {
+      unsigned int global_refinements = 0, displacement_dofs = 0, updates = 0,
+                   newton_steps = 0, linear_solves = 0;
+      bool   converged = false;
+      double seconds   = 0;
+    };
+    std::vector<CoarseLevel> coarse_levels;
     /** Wall time of the run's sections so far (for summary.txt). */
     double wall_time = 0;
 

@@ -10,6 +10,7 @@
 #include <hrcontact/core/input.h>
 #include <hrcontact/discretisation/equilibrium_system.h>
 #include <hrcontact/solvers/contact_iteration.h>
+#include <hrcontact/solvers/nested_iteration.h>
 #include <hrcontact/solvers/newton_step.h>
 #include <hrcontact/solvers/row_relinearisation.h>
 
@@ -83,6 +84,16 @@ namespace hrcontact
           const double             load_scale,
           RowRelinearisation      &relinearisation,
           std::ostream            &log);
+
+    /**
+     * Start the next solve from `start` (one entry per Q row: mu, alpha and
+     * a reaction estimate that selects the first pieces) instead of the
+     * trial solution of Step 0: the nested iteration's coarser level. Used
+     * by one solve only. Not for the pure penalty or the displacement
+     * augmented Lagrangian, which have no such state.
+     */
+    void
+    start_from(const ContactStart &start);
 
     /** The state, history and outcome of the last solve. */
     const ContactIteration &
@@ -166,6 +177,10 @@ namespace hrcontact
     /** The outcome from the flags iterate() left. */
     void
     set_outcome();
+
+    /** The start of the next solve (start_from), if any. */
+    ContactStart start;
+    bool         has_start = false;
 
     /** The relinearisation of the running solve, or null. */
     RowRelinearisation *relinearisation = nullptr;

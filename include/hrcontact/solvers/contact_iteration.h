@@ -87,6 +87,9 @@ namespace hrcontact
     unsigned int total_newton_steps = 0;
     double       final_norm_pbar    = 0;
     double       tolerance_used     = 0;
+    /** The force the relative tolerance is measured against (the load and
+     * the first solve's reactions). */
+    double tolerance_scale = 0;
   };
 } // namespace hrcontact
 

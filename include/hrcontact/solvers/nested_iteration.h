@@ -1,0 +1,98 @@
+#ifndef hrcontact_nested_iteration_h
+#define hrcontact_nested_iteration_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <hrcontact/discretisation/equilibrium_system.h>
+#include <hrcontact/solvers/contact_iteration.h>
+
+#include <string>
+#include <vector>
+
+namespace hrcontact
+{
+  /**
+   * Where the augmented Lagrangian starts instead of the trial solution
+   * (Step 0): per Q row a multiplier mu (w_n - g), a compliance alpha and a
+   * reaction estimate p that selects the first piece, piece(p, mu, alpha).
+   * Any start converges to the same answer (the iteration only needs one
+   * exact solve to begin with); a good one saves the updates and Newton
+   * steps that discover the pressed set.
+   */
+  struct ContactStart
+  {
+    std::vector<double> mu, alpha, p;
+    /**
+     * The force scale of the relative tolerance (ContactIteration::
+     * tolerance_scale, carried like a reaction), so that the finer level
+     * stops where it would have from its own trial solution; 0: none.
+     */
+    double tolerance_scale = 0;
+    /** Whether it holds one entry per Q row of a system. */
+    bool
+    fits(const EquilibriumSystem &system) const
+    {
+      const std::size_t n = system.contact_rows.size();
+      return mu.size() == n && alpha.size() == n && p.size() == n;
+    }
+  };
+
+  /**
+   * The state a converged contact iteration on a coarser mesh leaves,
+   * carried to the Q rows of a finer one by position: each fine row takes
+   * the average of the coarse rows of the same kind (obstacle, law,
+   * unilateral) nearest to its node (several at the same distance: the
+   * midpoints of uniform refinement, so mu is interpolated linearly along
+   * the boundary there, and a node that existed on the coarse mesh takes
+   * its own state). Nodal reactions scale with the tributary area,
+   * `reaction_scale` (2^{1-dim} per level of uniform refinement); the
+   * compliance with the nodal compliance, `compliance_scale`.
+   */
+  ContactStart
+  transfer_contact_state(const EquilibriumSystem &coarse,
+                         const ContactIteration  &coarse_state,
+                         const EquilibriumSystem &fine,
+                         const double             reaction_scale,
+                         const double             compliance_scale);
+
+  /**
+   * Nested iteration over the levels of uniform refinement: the contact
+   * problem is solved on the scene's mesh with fewer global refinements
+   * first, its pressed set, multipliers and penalties are carried to the
+   * next level (transfer_contact_state), and so on up to the scene's own
+   * mesh, where the iteration then only corrects the boundary of the
+   * contact zone. Each level costs a quarter (2D) or an eighth (3D) of the
+   * next, so the coarse levels together add about a third (a seventh) of a
+   * fine solve, and the fine level needs a few solves instead of tens
+   * (doc/benchmarks.md). The answer is the fine level's own: the start
+   * changes the path of the iteration, not where it ends (to its
+   * tolerance).
+   */
+  struct NestedIterationSettings
+  {
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * The number of coarser levels to solve first, given the scene's global
+     * refinements and its displacement dofs, for a run whose contact
+     * iteration can start from a carried state (`applies`): `Coarse levels`
+     * if a number; automatic: none below `Minimum dofs`, else as many as
+     * keep the coarsest level at `Coarsest level dofs` or more.
+     */
+    unsigned int
+    levels(const unsigned int global_refinements,
+           const double       displacement_dofs,
+           const unsigned int dim,
+           const bool         applies) const;
+
+    /** -1: automatic. */
+    int    coarse_levels       = -1;
+    double minimum_dofs        = 2e4;
+    double coarsest_level_dofs = 2e3;
+  };
+} // namespace hrcontact
+
+#endif

@@ -1,0 +1,183 @@
+#include <hrcontact/core/input.h>
+#include <hrcontact/solvers/nested_iteration.h>
+
+#include <cmath>
+#include <limits>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  ContactStart
+  transfer_contact_state(const EquilibriumSystem &coarse,
+                         const ContactIteration  &coarse_state,
+                         const EquilibriumSystem &fine,
+                         const double             reaction_scale,
+                         const double             compliance_scale)
+  {
+    const unsigned int nc = coarse.contact_rows.size(),
+                       nf = fine.contact_rows.size();
+    AssertThrow(coarse_state.p.size() == nc && coarse_state.mu.size() == nc &&
+                  coarse_state.alpha.size() == nc,
+                ExcMessage("the coarse contact state does not fit its rows"));
+    auto same_kind = [](const EquilibriumRow &a, const EquilibriumRow &b) {
+      if (a.obstacle != b.obstacle || a.unilateral != b.unilateral ||
+          bool(a.law) != bool(b.law))
+        return false;
+      if (a.law && a.law->name() != b.law->name())
+        return false;
+      // Rows of one node along different directions (a node in a corner
+      // between obstacles) are told apart by their directions.
+      double dot = 0, na = 0, nb = 0;
+      if (a.combination.size() == b.combination.size())
+        for (unsigned int k = 0; k < a.combination.size(); ++k)
+          {
+            dot += a.direction_component(k) * b.direction_component(k);
+            na += a.direction_component(k) * a.direction_component(k);
+            nb += b.direction_component(k) * b.direction_component(k);
+          }
+      return dot > 0.5 * std::sqrt(na * nb);
+    };
+    auto distance2 = [&](const unsigned int fine_node,
+                         const unsigned int coarse_node) {
+      double d2 = 0;
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          const double d = fine.node_coordinates[fine_node][k] -
+                           coarse.node_coordinates[coarse_node][k];
+          d2 += d * d;
+        }
+      return d2;
+    };
+
+    ContactStart start;
+    start.tolerance_scale = coarse_state.tolerance_scale * reaction_scale;
+    start.mu.assign(nf, 0.);
+    start.alpha.assign(nf, 0.);
+    start.p.assign(nf, 0.);
+    double alpha_default = 0;
+    for (const double a : coarse_state.alpha)
+      alpha_default = std::max(alpha_default, a);
+    std::vector<unsigned int> nearest;
+    for (unsigned int i = 0; i < nf; ++i)
+      {
+        const EquilibriumRow &row  = fine.rows[fine.contact_rows[i]];
+        double                best = std::numeric_limits<double>::max();
+        nearest.clear();
+        for (unsigned int j = 0; j < nc; ++j)
+          {
+            const EquilibriumRow &c = coarse.rows[coarse.contact_rows[j]];
+            if (!same_kind(row, c))
+              continue;
+            const double d2 = distance2(row.node, c.node);
+            // Equal distances to round-off: the midpoints of a refinement.
+            if (d2 < best * (1 - 1e-6))
+              {
+                best = d2;
+                nearest.assign(1, j);
+              }
+            else if (d2 <= best * (1 + 1e-6))
+              nearest.push_back(j);
+          }
+        if (nearest.empty())
+          {
+            // No coarse row of this kind: start it as the trial does.
+            start.alpha[i] = alpha_default * compliance_scale;
+            continue;
+          }
+        for (const unsigned int j : nearest)
+          {
+            start.mu[i] += coarse_state.mu[j];
+            start.alpha[i] += coarse_state.alpha[j];
+            start.p[i] += coarse_state.p[j];
+          }
+        const double n = nearest.size();
+        start.mu[i] /= n;
+        start.alpha[i] *= compliance_scale / n;
+        start.p[i] *= reaction_scale / n;
+      }
+    return start;
+  }
+
+  void
+  NestedIterationSettings::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Nested iteration");
+    prm.declare_entry(
+      "Coarse levels",
+      "automatic",
+      Patterns::Anything(),
+      "Solve the contact problem first on the mesh with this many fewer "
+      "global refinements, then carry its pressed set, multipliers and "
+      "penalties up one level at a time (the answer is the fine mesh's own; "
+      "only the number of Newton steps on it drops). 0: off. automatic: on "
+      "the condensed path with the consistent or Macaulay augmented "
+      "Lagrangian, from Minimum dofs up, as many levels as keep the coarsest "
+      "at Coarsest level dofs or more. A number needs as many Global "
+      "refinements.");
+    prm.declare_entry("Minimum dofs",
+                      "20000",
+                      Patterns::Double(0),
+                      "automatic: no nested iteration for scenes with fewer "
+                      "displacement dofs (their solves cost less than "
+                      "building the coarse meshes).");
+    prm.declare_entry("Coarsest level dofs",
+                      "2000",
+                      Patterns::Double(0),
+                      "automatic: the coarsest level keeps at least about "
+                      "this many displacement dofs (fewer resolve the "
+                      "contact zone too coarsely to help).");
+    prm.leave_subsection();
+  }
+
+  void
+  NestedIterationSettings::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Nested iteration");
+    const std::string levels = prm.get("Coarse levels");
+    if (levels == "automatic")
+      coarse_levels = -1;
+    else
+      {
+        std::size_t used  = 0;
+        int         value = -1;
+        try
+          {
+            value = std::stoi(levels, &used);
+          }
+        catch (const std::exception &)
+          {
+            used = 0;
+          }
+        if (used != levels.size() || value < 0)
+          throw InputError("Nested iteration/Coarse levels must be automatic "
+                           "or a non-negative integer, not '" +
+                           levels + "'.");
+        coarse_levels = value;
+      }
+    minimum_dofs        = prm.get_double("Minimum dofs");
+    coarsest_level_dofs = prm.get_double("Coarsest level dofs");
+    prm.leave_subsection();
+  }
+
+  unsigned int
+  NestedIterationSettings::levels(const unsigned int global_refinements,
+                                  const double       displacement_dofs,
+                                  const unsigned int dim,
+                                  const bool         applies) const
+  {
+    if (coarse_levels >= 0)
+      return coarse_levels;
+    if (!applies || displacement_dofs < minimum_dofs)
+      return 0;
+    unsigned int levels = 0;
+    double       dofs   = displacement_dofs;
+    while (levels < global_refinements &&
+           dofs / std::pow(2., dim) >= coarsest_level_dofs)
+      {
+        dofs /= std::pow(2., dim);
+        ++levels;
+      }
+    return levels;
+  }
+} // namespace hrcontact
