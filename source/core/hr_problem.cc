@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <hrcontact/core/hr_problem.h>
+#include <hrcontact/core/run.h>
 #include <hrcontact/discretisation/displacement_stiffness.h>
 #include <hrcontact/discretisation/hr_assembler.h>
 
@@ -31,7 +32,6 @@ namespace hrcontact
   template <int dim>
   HRProblem<dim>::HRProblem(ParameterHandler &prm, const MPI_Comm communicator)
     : mpi_communicator(communicator)
-    , parameters(prm)
     , results_(scene, spaces, system, partition)
     , timer(std::cout, TimerOutput::never, TimerOutput::wall_times)
   {
@@ -43,6 +43,9 @@ namespace hrcontact
     postprocessors.parse_parameters(prm, scene.constants);
     output.parse_parameters(prm);
     nested.parse_parameters(prm);
+    std::ostringstream text;
+    prm.print_parameters(text, ParameterHandler::ShortPRM);
+    parameter_text = text.str();
   }
 
   template <int dim>
@@ -152,6 +155,10 @@ namespace hrcontact
       }
     if (output.time_floor)
       time_floor(log);
+    r.has_contact = false;
+    for (const unsigned int row : system.contact_rows)
+      r.has_contact |=
+        system.rows[row].unilateral || bool(system.rows[row].law);
     Timer contact_timer;
     start_from_coarser_level(r.solution_path, log);
     std::unique_ptr<NewtonStepPath> path;
@@ -227,10 +234,8 @@ namespace hrcontact
   {
     Results<dim> &r = results_;
     r.coarse_levels.clear();
-    bool has_contact = false;
-    for (const unsigned int row : system.contact_rows)
-      has_contact |= system.rows[row].unilateral || bool(system.rows[row].law);
-    using Regularisation = AugmentedLagrangianSolver::Regularisation;
+    const bool has_contact = r.has_contact;
+    using Regularisation   = AugmentedLagrangianSolver::Regularisation;
     const bool carries_state =
       (contact_solver.regularisation == Regularisation::consistent ||
        contact_solver.regularisation == Regularisation::macaulay);
@@ -262,8 +267,11 @@ namespace hrcontact
 
     // The coarser level: the same scene with one refinement fewer, on the
     // same path and processes, nested further itself; no timing extras.
-    Timer          timer;
-    HRProblem<dim> coarse(parameters, mpi_communicator);
+    Timer            timer;
+    ParameterHandler coarse_parameters;
+    declare_all_parameters(coarse_parameters);
+    coarse_parameters.parse_input_from_string(parameter_text);
+    HRProblem<dim> coarse(coarse_parameters, mpi_communicator);
     coarse.scene.global_refinements = scene.global_refinements - 1;
     coarse.nested.coarse_levels     = levels - 1;
     coarse.reduction.path           = path_name;
@@ -333,10 +341,7 @@ namespace hrcontact
   {
     Results<dim>      &r  = results_;
     const unsigned int nq = system.contact_rows.size();
-    r.has_contact         = false;
-    for (const unsigned int row : system.contact_rows)
-      r.has_contact |= system.rows[row].unilateral || system.rows[row].law;
-    r.contact = nullptr;
+    r.contact             = nullptr;
     r.contact_w.assign(nq, 0.);
     if (!r.has_contact)
       {

@@ -66,10 +66,12 @@ namespace hrcontact
         nearest.clear();
         for (unsigned int j = 0; j < nc; ++j)
           {
-            const EquilibriumRow &c = coarse.rows[coarse.contact_rows[j]];
-            if (!same_kind(row, c))
+            const EquilibriumRow &c  = coarse.rows[coarse.contact_rows[j]];
+            const double          d2 = distance2(row.node, c.node);
+            // The distance first: the kind (a string compare for laws) only
+            // for the few rows that could be nearest.
+            if (d2 > best * (1 + 1e-6) || !same_kind(row, c))
               continue;
-            const double d2 = distance2(row.node, c.node);
             // Equal distances to round-off: the midpoints of a refinement.
             if (d2 < best * (1 - 1e-6))
               {

@@ -347,9 +347,7 @@ namespace hrcontact
   {
     /** Per Q row: -1 held, else the spring's compliance; its direction. */
     std::vector<double> key;
-    /** K plus the springs, before condensation (for the right-hand side). */
-    SparseMatrix<double> matrix;
-    SparseDirectUMFPACK  factor;
+    SparseDirectUMFPACK factor;
   };
 
   CondensedStep::~CondensedStep() = default;
@@ -771,10 +769,9 @@ namespace hrcontact
         if (refactorise)
           {
             direct_factor.reset(); // free the old factors first
-            direct_factor           = std::make_unique<DirectFactor>();
-            direct_factor->key      = key;
-            SparseMatrix<double> &A = direct_factor->matrix;
-            A.reinit(sparsity);
+            direct_factor      = std::make_unique<DirectFactor>();
+            direct_factor->key = key;
+            SparseMatrix<double> A(sparsity);
             A.copy_from(K);
             for (const auto &[row, piece] : springs)
               {
@@ -785,12 +782,10 @@ namespace hrcontact
                           row->combination[b].first,
                           spring_matrix(a, b));
               }
-            SparseMatrix<double> condensed(sparsity);
-            condensed.copy_from(A);
-            constraints.condense(condensed);
+            constraints.condense(A);
             try
               {
-                direct_factor->factor.initialize(condensed);
+                direct_factor->factor.initialize(A);
               }
             catch (const std::exception &)
               {
@@ -802,17 +797,24 @@ namespace hrcontact
           }
         // u = u_c + v: u_c carries the inhomogeneities (the held values),
         // v solves the homogeneously constrained system with the right-hand
-        // side f + spring forces - A u_c, condensed like the matrix.
-        Vector<double> rhs = system.load;
+        // side f + spring forces - (K + springs) u_c, condensed like the
+        // matrix.
+        Vector<double> u_c(n_u), r(n_u);
+        constraints.distribute(u_c);
+        K.residual(r, u_c, system.load);
         for (const auto &[row, piece] : springs)
           {
             spring(*row, *piece, spring_matrix, spring_force);
             for (unsigned int a = 0; a < row->combination.size(); ++a)
-              rhs[row->combination[a].first] += spring_force[a];
+              {
+                double spring_times_u_c = 0;
+                for (unsigned int b = 0; b < row->combination.size(); ++b)
+                  spring_times_u_c +=
+                    spring_matrix(a, b) * u_c[row->combination[b].first];
+                r[row->combination[a].first] +=
+                  spring_force[a] - spring_times_u_c;
+              }
           }
-        Vector<double> u_c(n_u), r(n_u);
-        constraints.distribute(u_c);
-        direct_factor->matrix.residual(r, u_c, rhs);
         for (const auto &line : constraints.get_lines())
           for (const auto &[dof, coefficient] : line.entries)
             r[dof] += coefficient * r[line.index];

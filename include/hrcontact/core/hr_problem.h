@@ -100,8 +100,11 @@ namespace hrcontact
     summarise_run();
 
     MPI_Comm mpi_communicator;
-    /** The parameters, for the coarser levels of the nested iteration. */
-    dealii::ParameterHandler &parameters;
+    /**
+     * The parameters as read, for the coarser levels of the nested
+     * iteration (a copy: the handler need not outlive the constructor).
+     */
+    std::string parameter_text;
     /** Declared before the spaces, whose DoFHandlers refer to it. */
     dealii::Triangulation<dim> triangulation;
     Scene<dim>                 scene;

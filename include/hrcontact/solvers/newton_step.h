@@ -259,8 +259,9 @@ namespace hrcontact
     struct Distributed;
     std::unique_ptr<Distributed> distributed;
     /**
-     * Serial direct back end: the factorisation of the last condensed K,
-     * kept while the held rows and the springs' compliances stay the same.
+     * Serial direct back end: the factorisation of the last condensed K
+     * plus springs, kept while the held rows, the springs' compliances and
+     * the rows' directions stay the same.
      * A multiplier update that changes no branch only moves the anchors
      * (g + offset): the right-hand side, not K, so the next step costs a
      * forward and back substitution instead of a factorisation.
