@@ -68,6 +68,19 @@ namespace hrcontact
     for (unsigned int c = 0; c < n_comp; ++c)
       T[c] = MixedSpaces<dim>::stress_basis_tensor(c);
     SymmetricTensor<2, dim> sigma_q;
+    // The component of each shape function and, per stress shape function,
+    // the index pair of its basis tensor: looked up once, not in the n_s^2
+    // and n_u n_s loops below (same sums in the same order).
+    std::vector<unsigned int>                          comp_u(n_u), comp_s(n_s);
+    std::vector<std::pair<unsigned int, unsigned int>> pq_s(n_s);
+    for (unsigned int i = 0; i < n_u; ++i)
+      comp_u[i] = fe_u.system_to_component_index(i).first;
+    for (unsigned int j = 0; j < n_s; ++j)
+      {
+        comp_s[j] = fe_s.system_to_component_index(j).first;
+        pq_s[j]   = MixedSpaces<dim>::stress_component_indices(comp_s[j]);
+      }
+    std::vector<double> psi(n_s);
 
     CellBlocks blocks;
     auto      &du = blocks.displacement_dofs;
@@ -114,7 +127,7 @@ namespace hrcontact
                 sigma_q = 0;
                 for (unsigned int j = 0; j < n_s; ++j)
                   sigma_q += (*stress_state)[ds[j]] * fv_s.shape_value(j, q) *
-                             T[fe_s.system_to_component_index(j).first];
+                             T[comp_s[j]];
               }
             for (unsigned int c = 0; c < n_comp; ++c)
               for (unsigned int d = 0; d < n_comp; ++d)
@@ -122,36 +135,37 @@ namespace hrcontact
                   T[c] * material.compliance_times(sigma_q,
                                                    T[d],
                                                    fv_u.quadrature_point(q));
+            for (unsigned int j = 0; j < n_s; ++j)
+              psi[j] = fv_s.shape_value(j, q);
+            // Terms with a zero compliance or strain factor add nothing.
             for (unsigned int i = 0; i < n_s; ++i)
               {
-                const unsigned int ci = fe_s.system_to_component_index(i).first;
-                const double       psi = fv_s.shape_value(i, q);
+                const unsigned int ci    = comp_s[i];
+                const double       psi_i = psi[i];
                 for (unsigned int j = 0; j < n_s; ++j)
                   {
-                    const unsigned int cj =
-                      fe_s.system_to_component_index(j).first;
-                    Fc(i, j) += psi * fv_s.shape_value(j, q) * K(ci, cj) * JxW;
+                    const double k = K(ci, comp_s[j]);
+                    if (k != 0)
+                      Fc(i, j) += psi_i * psi[j] * k * JxW;
                   }
               }
             for (unsigned int i = 0; i < n_u; ++i)
               {
-                const unsigned int a = fe_u.system_to_component_index(i).first;
+                const unsigned int   a    = comp_u[i];
                 const Tensor<1, dim> grad = fv_u.shape_grad(i, q);
                 // eps(phi_i) : T_c = sum_b sym(e_a (x) grad)_{..}: with T_c
                 // having ones at (p,q) and (q,p).
                 for (unsigned int j = 0; j < n_s; ++j)
                   {
-                    const unsigned int c =
-                      fe_s.system_to_component_index(j).first;
-                    const auto pq =
-                      MixedSpaces<dim>::stress_component_indices(c);
-                    double eps_T = 0;
+                    const auto &pq    = pq_s[j];
+                    double      eps_T = 0;
                     if (pq.first == pq.second)
                       eps_T = (a == pq.first) ? grad[a] : 0.;
                     else
                       eps_T = (a == pq.first ? grad[pq.second] : 0.) +
                               (a == pq.second ? grad[pq.first] : 0.);
-                    Bc(i, j) += eps_T * fv_s.shape_value(j, q) * JxW;
+                    if (eps_T != 0)
+                      Bc(i, j) += eps_T * psi[j] * JxW;
                   }
               }
             if (scene.body_force)
