@@ -207,7 +207,7 @@ namespace hrcontact
     const unsigned int   nq    = system.contact_rows.size();
     LinearSolverSettings floor = linear_solver;
     floor.solver               = "cg-amg";
-    floor.reuse_preconditioner = false;
+    floor.reuse_preconditioner = "false";
     Timer                            timer;
     const DisplacementStiffness<dim> q1(scene, spaces);
     CondensedStep                    path(system, floor, &partition, &q1);

@@ -68,13 +68,16 @@ namespace hrcontact
                       "named error (exit code 3).");
     prm.declare_entry(
       "Reuse preconditioner",
-      "false",
-      Patterns::Bool(),
+      "automatic",
+      Patterns::Selection("automatic|true|false"),
       "Keep the AMG hierarchy of an earlier Newton step while CG still "
       "converges in at most twice the iterations it took right after the "
-      "set-up (the matrices differ only in the contact rows); rebuild it "
-      "otherwise. Measured in doc/performance.md: it saves set-ups but "
-      "costs more CG iterations than it saves on our scenes, hence off.");
+      "set-up plus 5 (the matrices differ only in the contact rows); rebuild "
+      "it otherwise. automatic: keep it in 3D, where one set-up costs about "
+      "two floors' worth of CG iterations (3D block at 807k dofs on 2 "
+      "processes: contact solve 202 s rebuilding, 160 s keeping), rebuild "
+      "it in 2D, where set-ups are cheap and keeping gains nothing (Hertz "
+      "refinements 8 and 9, doc/benchmarks.md).");
     prm.declare_entry(
       "AMG aggregation threshold",
       "1e-4",
@@ -103,11 +106,18 @@ namespace hrcontact
     direct_limit_3d       = prm.get_double("Direct solver limit 3D");
     tolerance             = prm.get_double("Tolerance");
     max_iterations        = prm.get_integer("Maximum iterations");
-    reuse_preconditioner  = prm.get_bool("Reuse preconditioner");
+    reuse_preconditioner  = prm.get("Reuse preconditioner");
     warm_start            = prm.get_bool("Warm start");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
     prm.leave_subsection();
+  }
+
+  bool
+  LinearSolverSettings::reuses_preconditioner(const unsigned int dim) const
+  {
+    return reuse_preconditioner == "true" ||
+           (reuse_preconditioner == "automatic" && dim == 3);
   }
 
   std::string
@@ -872,15 +882,16 @@ namespace hrcontact
     Timer       timer;
     auto       &d     = *distributed;
     const auto &rhs   = d.rhs;
+    const bool  reuse = settings.reuses_preconditioner(system.dim);
     auto        setup = [&]() {
       Timer setup_timer;
       d.preconditioner.clear();
       // ML keeps a pointer to the matrix: a hierarchy that outlives the
       // step needs a copy; one rebuilt every step does not.
-      if (settings.reuse_preconditioner)
+      if (reuse)
         d.setup_matrix.copy_from(d.matrix);
       const TrilinosWrappers::SparseMatrix &M =
-        settings.reuse_preconditioner ? d.setup_matrix : d.matrix;
+        reuse ? d.setup_matrix : d.matrix;
       // Smoothed aggregation for an elliptic operator; the near null space
       // is the rigid-body modes (ML's pre-computed null space), since the
       // translations alone (deal.II 9.4's constant modes) coarsen bending
@@ -925,7 +936,7 @@ namespace hrcontact
       statistics.setup_seconds += setup_timer.wall_time();
     };
     bool fresh = false;
-    if (!d.built || !settings.reuse_preconditioner)
+    if (!d.built || !reuse)
       {
         setup();
         fresh = true;

@@ -40,13 +40,17 @@ namespace hrcontact
     /** "direct" or "cg-amg" for a system with n unknowns in dim dimensions. */
     std::string
     choose(const unsigned int n, const unsigned int dim) const;
+    /** Whether the AMG hierarchy is kept across Newton steps in dim. */
+    bool
+    reuses_preconditioner(const unsigned int dim) const;
 
-    std::string  solver                = "automatic";
-    double       direct_limit_2d       = 1e5;
-    double       direct_limit_3d       = 1e4;
-    double       tolerance             = 1e-12;
-    unsigned int max_iterations        = 2000;
-    bool         reuse_preconditioner  = false;
+    std::string  solver          = "automatic";
+    double       direct_limit_2d = 1e5;
+    double       direct_limit_3d = 1e4;
+    double       tolerance       = 1e-12;
+    unsigned int max_iterations  = 2000;
+    /** "automatic" (keep in 3D), "true" or "false". */
+    std::string  reuse_preconditioner  = "automatic";
     bool         warm_start            = true;
     double       aggregation_threshold = 1e-4;
     unsigned int smoother_sweeps       = 2;
