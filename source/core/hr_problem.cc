@@ -67,6 +67,7 @@ namespace hrcontact
                                        spaces.dof_handler_displacement,
                                        mpi_communicator);
     }
+    mark_memory("mesh, dofs and partition");
     log << "  "
         << (dim == 2 ? "2D (" + scene.plane_condition_name() + ")" : "3D")
         << ", stress element " << spaces.stress_element_name << '\n'
@@ -81,6 +82,7 @@ namespace hrcontact
       TimerOutput::Scope t(timer, "assembly");
       HRAssembler<dim>(scene, spaces).classify_rows(system);
     }
+    mark_memory("row classification");
     log << "  rows: " << system.free_rows.size() << " free (C), "
         << system.contact_rows.size() << " normal (Q), "
         << system.prescribed_rows.size() << " prescribed (H)" << std::endl;
@@ -137,6 +139,7 @@ namespace hrcontact
       HRAssembler<dim>(scene, spaces)
         .assemble_blocks(system, condensed ? &partition : nullptr);
     }
+    mark_memory("equilibrium blocks");
     const unsigned int nq    = system.contact_rows.size();
     r.linear_elastic_seconds = 0;
     if (output.time_linear_solve && condensed)
@@ -153,14 +156,21 @@ namespace hrcontact
         log << "  one linear elastic solve (contact rows held at their gaps): "
             << r.linear_elastic_seconds << " s" << std::endl;
       }
+    if (output.time_linear_solve && condensed)
+      mark_memory("linear elastic solve (timed)");
     if (output.time_floor)
-      time_floor(log);
+      {
+        time_floor(log);
+        mark_memory("Q1 floor (timed)");
+      }
     r.has_contact = false;
     for (const unsigned int row : system.contact_rows)
       r.has_contact |=
         system.rows[row].unilateral || bool(system.rows[row].law);
     Timer contact_timer;
     start_from_coarser_level(r.solution_path, log);
+    if (!r.coarse_levels.empty())
+      mark_memory("coarser levels");
     std::unique_ptr<NewtonStepPath> path;
     {
       TimerOutput::Scope t(timer, "equilibrium reduction");
@@ -174,12 +184,15 @@ namespace hrcontact
           r.reduction = &reduction;
         }
     }
+    mark_memory("Newton-step path");
     solve_on_path(*path, log);
     r.contact_solve_seconds = contact_timer.wall_time();
+    mark_memory("contact solve");
     {
       TimerOutput::Scope t(timer, "displacements");
       collect_fields(*path);
     }
+    mark_memory("stresses and displacements");
     r.linear_statistics = path->statistics;
     if (condensed)
       log << "  linear solver: " << r.linear_statistics.solver << ", "
@@ -487,12 +500,33 @@ namespace hrcontact
 
   template <int dim>
   void
+  HRProblem<dim>::mark_memory(const std::string &stage)
+  {
+    Utilities::System::MemoryStats stats;
+    Utilities::System::get_memory_stats(stats);
+    memory_marks.emplace_back(
+      stage,
+      Utilities::MPI::max(stats.VmRSS / 1024., mpi_communicator),
+      Utilities::MPI::max(stats.VmHWM / 1024., mpi_communicator));
+  }
+
+  template <int dim>
+  void
   HRProblem<dim>::run(std::ostream &log)
   {
     solve(log);
     output_results(log);
     if (output.print_timing && is_root_process(mpi_communicator))
-      timer.print_summary();
+      {
+        timer.print_summary();
+        std::ostringstream table;
+        table << "resident memory after each stage (MB, largest process):\n";
+        for (const auto &[stage, resident, peak] : memory_marks)
+          table << "  " << std::left << std::setw(36) << stage << std::right
+                << std::setw(10) << std::fixed << std::setprecision(0)
+                << resident << "   (peak so far " << peak << ")\n";
+        log << table.str() << std::flush;
+      }
     if (!results_.converged())
       throw NotConvergedError(
         contact_solver.outcome_message(results_.free_rigid_motions));

@@ -21,6 +21,8 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <tuple>
+#include <vector>
 
 namespace hrcontact
 {
@@ -98,6 +100,13 @@ namespace hrcontact
     /** The run's own summary.txt keys: dimensions, path, iterations. */
     void
     summarise_run();
+    /**
+     * Record the resident memory of the largest process after a stage, for
+     * the table printed with Output/Print timing (where the memory of a run
+     * goes, the figure issue 17's distributed data path is about).
+     */
+    void
+    mark_memory(const std::string &stage);
 
     MPI_Comm mpi_communicator;
     /**
@@ -120,6 +129,8 @@ namespace hrcontact
     DofPartition        partition;
     Results<dim>        results_;
     dealii::TimerOutput timer;
+    /** (stage, resident MB of the largest process, peak MB so far). */
+    std::vector<std::tuple<std::string, double, double>> memory_marks;
   };
 } // namespace hrcontact
 
