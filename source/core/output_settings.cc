@@ -16,8 +16,9 @@ namespace hrcontact
     prm.declare_entry("Print timing",
                       "true",
                       Patterns::Bool(),
-                      "Print a table of wall times at the end of the run "
-                      "(tests switch it off to keep their output "
+                      "Print a table of wall times at the end of the run, "
+                      "and the resident memory of the largest process after "
+                      "each stage (tests switch it off to keep their output "
                       "reproducible).");
     prm.declare_entry(
       "Time a linear elastic solve",

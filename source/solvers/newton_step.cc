@@ -16,6 +16,7 @@
 #include <hrcontact/discretisation/displacement_stiffness.h>
 #include <hrcontact/solvers/newton_step.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -145,8 +146,17 @@ namespace hrcontact
     /** Rigid-body modes per dof: component and node coordinates. */
     std::vector<unsigned int>          component;
     std::vector<std::array<double, 3>> point;
-    /** The displacement dofs and K_c of the cells this process owns, one
-     * cell after the other (dofs_per_cell and its square numbers each). */
+    /**
+     * K_c summed over the owned cells none of whose dofs belongs to the node
+     * of a Q or H row: the part of K that no Newton step changes (held rows,
+     * springs and their constraints touch only the cells at those nodes),
+     * assembled once and added to each step's matrix by one pass over the
+     * values instead of a pass over the cells.
+     */
+    TrilinosWrappers::SparseMatrix fixed;
+    /** The displacement dofs and K_c of the other owned cells, those at Q
+     * and H rows, one cell after the other (dofs_per_cell and its square
+     * numbers each). */
     unsigned int                         dofs_per_cell = 0;
     std::vector<types::global_dof_index> cell_dofs;
     std::vector<double>                  cell_stiffness;
@@ -503,9 +513,43 @@ namespace hrcontact
                                    partition.communicator);
         distributed->rhs.reinit(partition.owned, partition.communicator);
         distributed->u.reinit(partition.owned, partition.communicator);
+        // The cells at Q and H rows are kept; every other cell goes into the
+        // fixed part of K.
+        std::vector<bool> at_row(n_u, false);
+        for (const auto *rows : {&system.contact_rows, &system.prescribed_rows})
+          for (const unsigned int r : *rows)
+            for (const auto &[dof, c] : system.rows[r].combination)
+              at_row[dof] = true;
+        auto &fixed = distributed->fixed;
+        fixed.reinit(distributed->matrix);
+        std::vector<types::global_dof_index> kept_dofs, dofs(n_per_cell);
+        std::vector<double>                  kept_stiffness;
+        FullMatrix<double>                   Kk(n_per_cell, n_per_cell);
+        for (unsigned int k = 0; k < owned_cells.size(); ++k)
+          {
+            const auto    view = cell_dofs(k);
+            const double *values =
+              owned_stiffness.data() + std::size_t(k) * n_per_cell * n_per_cell;
+            if (std::any_of(view.begin(), view.end(), [&](const auto i) {
+                  return at_row[i];
+                }))
+              {
+                kept_dofs.insert(kept_dofs.end(), view.begin(), view.end());
+                kept_stiffness.insert(kept_stiffness.end(),
+                                      values,
+                                      values + n_per_cell * n_per_cell);
+                continue;
+              }
+            std::copy(view.begin(), view.end(), dofs.begin());
+            for (unsigned int i = 0; i < n_per_cell; ++i)
+              for (unsigned int j = 0; j < n_per_cell; ++j)
+                Kk(i, j) = values[i * n_per_cell + j];
+            fixed.add(dofs, Kk);
+          }
+        fixed.compress(VectorOperation::add);
         distributed->dofs_per_cell  = n_per_cell;
-        distributed->cell_dofs      = std::move(owned_dofs);
-        distributed->cell_stiffness = std::move(owned_stiffness);
+        distributed->cell_dofs      = std::move(kept_dofs);
+        distributed->cell_stiffness = std::move(kept_stiffness);
       }
     else
       {
@@ -697,7 +741,9 @@ namespace hrcontact
         auto &rhs = distributed->rhs;
         A         = 0;
         rhs       = 0;
-        // Loads enter per dof below; the cells bring stiffness only.
+        A.add(1., distributed->fixed);
+        // Loads enter per dof below; the cells at Q and H rows bring
+        // stiffness only.
         const auto        &d          = *distributed;
         const unsigned int n_per_cell = d.dofs_per_cell;
         const std::size_t  n_owned_cells =
