@@ -316,7 +316,10 @@ namespace hrcontact
       }
     level.linear_solves = coarse.results().linear_statistics.solves;
     level.converged     = solved;
-    level.seconds       = timer.wall_time();
+    // Its own time: the coarser levels it solved first report theirs.
+    level.seconds = timer.wall_time();
+    for (const auto &inner : r.coarse_levels)
+      level.seconds -= inner.seconds;
     r.coarse_levels.push_back(level);
     // The coarser levels' own lines first (coarsest first).
     {

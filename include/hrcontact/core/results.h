@@ -101,8 +101,10 @@ namespace hrcontact
     {
       unsigned int global_refinements = 0, displacement_dofs = 0, updates = 0,
                    newton_steps = 0, linear_solves = 0;
-      bool   converged = false;
-      double seconds   = 0;
+      bool converged = false;
+      /** The level's own wall time, without the coarser levels before it
+       * (so that the levels' seconds add up). */
+      double seconds = 0;
     };
     std::vector<CoarseLevel> coarse_levels;
     /** Wall time of the run's sections so far (for summary.txt). */
