@@ -78,7 +78,7 @@ namespace hrcontact
       "two floors' worth of CG iterations (3D block at 807k dofs on 2 "
       "processes: contact solve 202 s rebuilding, 160 s keeping), rebuild "
       "it in 2D, where set-ups are cheap and keeping gains nothing (Hertz "
-      "refinements 8 and 9, doc/benchmarks.md).");
+      "refinements 8 and 9, doc/performance.md).");
     prm.declare_entry(
       "AMG aggregation threshold",
       "1e-4",
