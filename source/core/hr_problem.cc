@@ -202,8 +202,12 @@ namespace hrcontact
                   " CG iterations, " +
                   std::to_string(r.linear_statistics.preconditioner_setups) +
                   " AMG set-ups" :
-                std::string())
-          << std::endl;
+                std::string());
+    if (condensed && r.linear_statistics.tightenings > 0)
+      log << ", tolerance tightened " << r.linear_statistics.tightenings
+          << " time(s) to " << r.linear_statistics.tolerance;
+    if (condensed)
+      log << std::endl;
     for (const double v : r.stress)
       if (!std::isfinite(v))
         throw InputError("Solve: the stresses are not finite; the problem is "
@@ -442,6 +446,11 @@ namespace hrcontact
         summary.add("linear_solves", s.solves);
         summary.add("linear_iterations", s.iterations);
         summary.add("preconditioner_setups", s.preconditioner_setups);
+        if (s.solver == "cg-amg")
+          {
+            summary.add("linear_tolerance", s.tolerance);
+            summary.add("linear_tolerance_tightenings", s.tightenings);
+          }
         summary.add("linear_setup_seconds", s.setup_seconds);
         summary.add("linear_solve_seconds", s.solve_seconds);
         if (output.time_linear_solve)

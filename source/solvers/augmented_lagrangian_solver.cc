@@ -405,11 +405,7 @@ namespace hrcontact
                      "mu is not 0, so its pieces do not join with a continuous "
                      "slope. Use the consistent augmented Lagrangian, or "
                      "Iteration scheme = diagonal." :
-                     "The pieces join smoothly, so the solves have lost their "
-                     "digits: the usual cause is an Initial penalty far larger "
-                     "than the nodal compliance of the mesh (released springs "
-                     "that no longer hold the body). Reduce Augmented "
-                     "Lagrangian/Initial penalty.") +
+                     cycle_cause()) +
                  mechanism_hint +
                  " Results were written with converged = false.";
         case SolveOutcome::diverged:
@@ -441,6 +437,25 @@ namespace hrcontact
     return "";
   }
 
+  std::string
+  AugmentedLagrangianSolver::cycle_cause() const
+  {
+    std::ostringstream s;
+    s << "The pieces join smoothly, so the solves have lost their digits: ";
+    if (cycle_linear_tolerance > 0)
+      s << "CG was tightened to " << cycle_linear_tolerance
+        << " of the right-hand side and still cycles, so the rounding of the "
+           "solves themselves is the limit. Take Linear solver/Solver = "
+           "direct, or reduce Augmented Lagrangian/Initial penalty if it is "
+           "far above the nodal compliance (released springs that no longer "
+           "hold the body).";
+    else
+      s << "the usual cause is an Initial penalty far larger than the nodal "
+           "compliance of the mesh (released springs that no longer hold the "
+           "body). Reduce Augmented Lagrangian/Initial penalty.";
+    return s.str();
+  }
+
   bool
   AugmentedLagrangianSolver::iterate(const EquilibriumSystem &system,
                                      NewtonStepPath          &path,
@@ -468,14 +483,15 @@ namespace hrcontact
     mu_history.clear();
     alpha_history.clear();
     released_history.clear();
-    total_newton_steps = 0;
-    converged          = false;
-    diverged           = false;
-    cycled             = false;
-    periodic           = false;
-    floating           = false;
-    roundoff_limited   = false;
-    roundoff_floor     = 0;
+    total_newton_steps     = 0;
+    converged              = false;
+    diverged               = false;
+    cycled                 = false;
+    periodic               = false;
+    floating               = false;
+    roundoff_limited       = false;
+    roundoff_floor         = 0;
+    cycle_linear_tolerance = 0;
 
     // Step 0: trial solution, every constraint bilateral with w_n = g; or
     // the carried state of a coarser level (start_from): its multipliers and
@@ -563,6 +579,18 @@ namespace hrcontact
                            std::vector<double>,
                            std::vector<double>>>
       visited;
+    // Inexact (CG) solves leave noise in p = Q s - q; three symptoms of it
+    // tighten CG's tolerance for the remaining solves (tighten_linear_solver)
+    // instead of letting the iteration fail: an inner cycle, an inner
+    // iteration at its step limit, and ||pbar|| rising while no row changed
+    // its branch.
+    const auto tighten = [&](const std::string &symptom) {
+      if (!path.tighten_linear_solver())
+        return false;
+      log << "    " << symptom << ": CG tolerance tightened to "
+          << path.statistics.tolerance << std::endl;
+      return true;
+    };
 
     for (unsigned int k = 1;; ++k)
       {
@@ -702,7 +730,16 @@ namespace hrcontact
             // The diagonal scheme holds the penalty while the released set
             // still changes: ||pbar|| then jumps with the set, not with a slow
             // multiplier iteration.
+            // With no branch changed, a classical update that raises ||pbar||
+            // is noise of the solves, not slow multipliers: tighten CG and
+            // keep alpha.
+            const bool noisy =
+              update > 1 && !diagonal && !pure_penalty && changes == 0 &&
+              norm > norm_previous &&
+              tighten("||pbar|| rose at update " + std::to_string(update) +
+                      " with no status change");
             if (update > 1 && !pure_penalty && !(diagonal && changes > 0) &&
+                !noisy &&
                 !update_penalty(alpha,
                                 pbar,
                                 pbar_previous,
@@ -724,6 +761,7 @@ namespace hrcontact
         // diagonal scheme: one step). A step that keeps every branch gives
         // e = 0 exactly: the piece is quadratic.
         newton_steps                                     = 0;
+        unsigned int                        step_limit   = max_newton_steps;
         double                              initial_norm = 0;
         std::set<std::vector<unsigned int>> solved_sets;
         for (;;)
@@ -746,16 +784,35 @@ namespace hrcontact
             const bool stale = geometry_changed && newton_steps == 0;
             if ((e_norm == 0 && !stale) ||
                 (newton_steps > 0 &&
-                 (diagonal || e_norm <= eps_k * initial_norm)) ||
-                newton_steps >= max_newton_steps)
+                 (diagonal || e_norm <= eps_k * initial_norm)))
               break;
+            if (newton_steps >= step_limit)
+              {
+                if (!tighten("inner Newton iteration of update " +
+                             std::to_string(history.size() + 1) +
+                             " reached Maximum Newton steps"))
+                  break;
+                step_limit += max_newton_steps;
+              }
             // A piece depends only on its branches (mu, alpha are fixed
             // here): a set seen before in this inner solve means Newton
             // cycles.
             if (!solved_sets.insert(branches).second)
               {
-                cycled = true;
-                break;
+                // In exact arithmetic the smooth pieces cannot cycle; with
+                // CG the residual may no longer fix p to the digits the
+                // laws compare (Hertz refinement 10 at 1e-12). Tighten it
+                // and solve this set again, or give up.
+                if (!tighten("inner Newton iteration of update " +
+                             std::to_string(history.size() + 1) +
+                             " came back to a released set it had solved"))
+                  {
+                    cycled                 = true;
+                    cycle_linear_tolerance = path.statistics.tolerance;
+                    break;
+                  }
+                solved_sets.clear();
+                solved_sets.insert(branches);
               }
             path.solve(active, p);
             for (unsigned int i = 0; i < nq; ++i)

@@ -188,6 +188,12 @@ namespace hrcontact
     // How the last solve stopped (see SolveOutcome).
     bool converged = false, diverged = false, cycled = false, periodic = false,
          floating = false, roundoff_limited = false;
+    /** CG's tolerance when the inner iteration cycled at its floor (0: the
+     * path solved exactly). */
+    double cycle_linear_tolerance = 0;
+    /** Why the smooth pieces of the inner iteration cycled. */
+    std::string
+    cycle_cause() const;
 
     /** The displacement AL of eq. 29 (Regularisation = displacement). */
     bool
