@@ -65,7 +65,7 @@ namespace hrcontact
       "large nodal forces, so keep it tight (1e-12 gives p to about 1e-9). "
       "When the contact iteration shows the noise of looser solves (an inner "
       "Newton cycle, an inner iteration at Maximum Newton steps, ||pbar|| "
-      "rising with no status change), the run divides this by 100 (down to "
+      "doubling at an update with no status change), the run divides this by 100 (down to "
       "1e-15) and goes on, and says so in the log and in summary.txt "
       "(linear_tolerance, linear_tolerance_tightenings).");
     prm.declare_entry("Maximum iterations",
