@@ -80,12 +80,30 @@ namespace hrcontact
       log << "  parallel: " << partition.describe() << std::endl;
     {
       TimerOutput::Scope t(timer, "assembly");
-      HRAssembler<dim>(scene, spaces).classify_rows(system);
+      // The dense bytes fall as the free rows grow, so with every dof free
+      // they bound those of any classification from below: above the limit
+      // the path is condensed whatever the rows, and the free rows of
+      // unconstrained nodes can stay implicit.
+      const bool lean_rows =
+        reduction.path != "null-space" &&
+        dense_reduction_bytes(spaces.dof_handler_displacement.n_dofs()) >
+          reduction.automatic_dense_limit;
+      HRAssembler<dim>(scene, spaces).classify_rows(system, lean_rows);
     }
     mark_memory("row classification");
-    log << "  rows: " << system.free_rows.size() << " free (C), "
+    log << "  rows: " << system.n_free_rows << " free (C), "
         << system.contact_rows.size() << " normal (Q), "
         << system.prescribed_rows.size() << " prescribed (H)" << std::endl;
+  }
+
+  template <int dim>
+  double
+  HRProblem<dim>::dense_reduction_bytes(const double n_free_rows) const
+  {
+    // C (n x tau), the null-space basis (n x m) and M0 with its factor.
+    const double n = n_free_rows, tau = spaces.dof_handler_stress.n_dofs();
+    const double m = std::max(0., tau - n);
+    return 8 * (tau * n + n * m + 2 * m * m);
   }
 
   template <int dim>
@@ -94,10 +112,7 @@ namespace hrcontact
   {
     // The paper's dense null-space reduction, or the condensed sparse system
     // once the dense one would be too big.
-    const double n           = system.free_rows.size(),
-                 tau         = spaces.dof_handler_stress.n_dofs();
-    const double m           = std::max(0., tau - n);
-    const double dense_bytes = 8 * (tau * n + n * m + 2 * m * m);
+    const double dense_bytes = dense_reduction_bytes(system.n_free_rows);
     std::string  path        = reduction.path;
     const bool   displacement_al =
       (contact_solver.regularisation ==
@@ -435,7 +450,7 @@ namespace hrcontact
     summary.add("cells", triangulation.n_active_cells());
     summary.add("displacement_dofs", system.n_displacement_dofs);
     summary.add("stress_dofs", system.n_stress_dofs);
-    summary.add("free_rows", system.free_rows.size());
+    summary.add("free_rows", system.n_free_rows);
     summary.add("normal_rows", system.contact_rows.size());
     summary.add("prescribed_rows", system.prescribed_rows.size());
     summary.add("solution_path", r.solution_path);

@@ -114,6 +114,7 @@ namespace hrcontact
     const std::vector<double> &row_values,
     Vector<double>            &u) const
   {
+    AssertThrow(!lean_rows, ExcMessage("lean rows have no value per row"));
     u.reinit(n_displacement_dofs);
     for (unsigned int r = 0; r < rows.size(); ++r)
       for (const auto &[dof, c] : rows[r].combination)

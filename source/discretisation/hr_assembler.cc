@@ -375,7 +375,8 @@ namespace hrcontact
 
   template <int dim>
   void
-  HRAssembler<dim>::classify_rows(EquilibriumSystem &system) const
+  HRAssembler<dim>::classify_rows(EquilibriumSystem &system,
+                                  const bool         lean_rows) const
   {
     const DoFHandler<dim> &dh_u = spaces.dof_handler_displacement;
     const auto            &tria = dh_u.get_triangulation();
@@ -400,9 +401,15 @@ namespace hrcontact
           }
     const unsigned int n_nodes = node_points.size();
     system.node_coordinates.assign(n_nodes, {{0., 0., 0.}});
+    system.dof_node.assign(dh_u.n_dofs(), 0);
+    system.dof_component.assign(dh_u.n_dofs(), 0);
     for (unsigned int n = 0; n < n_nodes; ++n)
       for (unsigned int d = 0; d < dim; ++d)
-        system.node_coordinates[n][d] = node_points[n][d];
+        {
+          system.node_coordinates[n][d]         = node_points[n][d];
+          system.dof_node[node_dofs[n][d]]      = n;
+          system.dof_component[node_dofs[n][d]] = d;
+        }
 
     // What the constraint kinds ask of each node, face by face.
     std::vector<NodeConstraints<dim>> constraints(n_nodes);
@@ -444,7 +451,9 @@ namespace hrcontact
     system.free_rows.clear();
     system.contact_rows.clear();
     system.prescribed_rows.clear();
-    auto add_row = [&](const unsigned int    node,
+    system.lean_rows   = lean_rows;
+    system.n_free_rows = 0;
+    auto add_row       = [&](const unsigned int    node,
                        const Tensor<1, dim> &direction,
                        const RowClass        row_class,
                        const double          value,
@@ -461,17 +470,25 @@ namespace hrcontact
       if (dual)
         for (unsigned int d = 0; d < dim; ++d)
           row.direction.push_back(direction[d]);
+      system.n_free_rows += (row_class == RowClass::free);
       const unsigned int r = system.rows.size();
       system.rows.push_back(row);
       (row_class == RowClass::free    ? system.free_rows :
-       row_class == RowClass::contact ? system.contact_rows :
-                                        system.prescribed_rows)
+             row_class == RowClass::contact ? system.contact_rows :
+                                              system.prescribed_rows)
         .push_back(r);
     };
 
     for (unsigned int node = 0; node < n_nodes; ++node)
       {
         const NodeConstraints<dim> &c = constraints[node];
+        if (lean_rows && c.obstacles.empty() && !c.own_row_source &&
+            !c.has_normal && c.obstacle < 0 && !c.any_prescribed())
+          {
+            // Implicit: the unit rows of the node's dofs.
+            system.n_free_rows += dim;
+            continue;
+          }
         std::vector<Tensor<1, dim>> taken; // directions already used
         for (unsigned int d = 0; d < dim; ++d)
           if (c.prescribed[d])
@@ -601,7 +618,11 @@ namespace hrcontact
           }
         AssertThrow(taken.size() == dim, ExcInternalError());
       }
-    AssertThrow(system.rows.size() == system.n_displacement_dofs,
+    AssertThrow(system.contact_rows.size() + system.prescribed_rows.size() +
+                    system.n_free_rows ==
+                  system.n_displacement_dofs,
+                ExcInternalError());
+    AssertThrow(lean_rows || system.rows.size() == system.n_displacement_dofs,
                 ExcInternalError());
   }
 

@@ -27,13 +27,25 @@ namespace hrcontact
     double              scale = 0;
     // The directions d_r of a node are the primal basis to the dual basis
     // c_r of the rows: sum_r (f.c_r) d_r = f.
+    std::vector<bool> stored(system.lean_rows ? system.n_displacement_dofs : 0,
+                             false);
     for (const auto &row : system.rows)
       {
         const double f_r = system.row_load(row);
         scale            = std::max(scale, std::abs(f_r));
         for (unsigned int d = 0; d < dim; ++d)
           load[d] += f_r * row.direction_component(d);
+        if (system.lean_rows)
+          for (const auto &[dof, c] : row.combination)
+            stored[dof] = true;
       }
+    // Lean rows: the implicit free rows are the unit rows of the other dofs.
+    for (unsigned int i = 0; i < stored.size(); ++i)
+      if (!stored[i])
+        {
+          scale = std::max(scale, std::abs(system.load[i]));
+          load[system.dof_component[i]] += system.load[i];
+        }
     auto add_reaction = [&](const unsigned int r, const double value) {
       scale = std::max(scale, std::abs(value));
       for (unsigned int d = 0; d < dim; ++d)

@@ -137,6 +137,9 @@ namespace hrcontact
   EquilibriumReduction::initialize(const EquilibriumSystem &sys,
                                    std::ostream            *log)
   {
+    AssertThrow(!sys.lean_rows,
+                ExcMessage("the null-space reduction needs every free row "
+                           "(a system classified with lean rows)"));
     system = &sys;
     tau    = sys.n_stress_dofs;
     n      = sys.free_rows.size();

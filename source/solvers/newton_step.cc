@@ -149,9 +149,6 @@ namespace hrcontact
     std::unique_ptr<Epetra_MultiVector> modes;
     bool                                built                  = false;
     unsigned int                        iterations_after_setup = 0;
-    /** Rigid-body modes per dof: component and node coordinates. */
-    std::vector<unsigned int>          component;
-    std::vector<std::array<double, 3>> point;
     /**
      * K_c summed over the owned cells none of whose dofs belongs to the node
      * of a Q or H row: the part of K that no Newton step changes (held rows,
@@ -399,15 +396,6 @@ namespace hrcontact
     if (solver == "cg-amg" || partition.distributed())
       {
         distributed = std::make_unique<Distributed>();
-        distributed->component.assign(n_u, 0);
-        distributed->point.assign(n_u, {{0., 0., 0.}});
-        for (const auto &row : system.rows)
-          for (unsigned int k = 0; k < row.combination.size(); ++k)
-            {
-              distributed->component[row.combination[k].first] = k;
-              distributed->point[row.combination[k].first] =
-                system.node_coordinates[row.node];
-            }
       }
 
     assemble();
@@ -966,8 +954,8 @@ namespace hrcontact
       for (int k = 0; k < map.NumMyElements(); ++k)
         {
           const auto         i = TrilinosWrappers::global_index(map, k);
-          const unsigned int c = d.component[i];
-          const auto        &x = d.point[i];
+          const unsigned int c = system.dof_component[i];
+          const auto        &x = system.node_coordinates[system.dof_node[i]];
           for (unsigned int m = 0; m < n_modes; ++m)
             (*d.modes)[m][k] = 0;
           (*d.modes)[c][k] = 1; // translations

@@ -79,6 +79,9 @@ namespace hrcontact
     /** "null-space" or "condensed", from the parameters and the size. */
     std::string
     choose_path(std::ostream &log) const;
+    /** Bytes of the dense null-space reduction with this many free rows. */
+    double
+    dense_reduction_bytes(const double n_free_rows) const;
     /** Output/Time the Q1 floor: the plain Q1 displacement solve. */
     void
     time_floor(std::ostream &log);

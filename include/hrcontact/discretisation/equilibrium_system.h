@@ -148,6 +148,22 @@ namespace hrcontact
     std::vector<std::array<double, 3>> node_coordinates;
 
     /**
+     * Lean rows, for the condensed path on large meshes: `rows` holds only
+     * the rows of nodes with a Q or H row (or a rotated basis); the free row
+     * of any other dof is implicit, the unit row of its component at its
+     * node (dof_node, dof_component), and `free_rows` lists only the stored
+     * free rows. One EquilibriumRow costs about 150 bytes with its heap
+     * allocations, 1.3 GB per process at 6.3M dofs; the implicit rows cost
+     * 5 bytes a dof. The null-space path needs every row (false).
+     */
+    bool lean_rows = false;
+    /** Every free row, stored or implicit (eq. 38's n). */
+    unsigned int n_free_rows = 0;
+    /** The node and the component of every displacement dof. */
+    std::vector<unsigned int>  dof_node;
+    std::vector<unsigned char> dof_component;
+
+    /**
      * B s - f over every cell, from storage or recomputed: the equilibrium
      * residual of any row, for checks. A lean system evaluates every cell
      * again on each process.
@@ -176,7 +192,8 @@ namespace hrcontact
     multiply_flexibility(const dealii::Vector<double> &s,
                          dealii::Vector<double>       &Fs) const;
 
-    /** Global displacement vector from one value per row. */
+    /** Global displacement vector from one value per row (every row
+     * stored: not for lean rows). */
     void
     displacements_from_row_values(const std::vector<double> &row_values,
                                   dealii::Vector<double>    &u) const;

@@ -24,9 +24,14 @@ namespace hrcontact
   public:
     HRAssembler(const Scene<dim> &scene, const MixedSpaces<dim> &spaces);
 
-    /** The C, Q and H rows, the nodes and the dimensions of the system. */
+    /**
+     * The C, Q and H rows, the nodes and the dimensions of the system;
+     * with `lean_rows`, the free rows of unconstrained nodes stay implicit
+     * (EquilibriumSystem::lean_rows).
+     */
     void
-    classify_rows(EquilibriumSystem &system) const;
+    classify_rows(EquilibriumSystem &system,
+                  const bool         lean_rows = false) const;
 
     /**
      * B, F and the load f; needs the rows. Without `lean`, every cell's
