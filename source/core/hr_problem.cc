@@ -271,8 +271,14 @@ namespace hrcontact
     const bool carries_state =
       (contact_solver.regularisation == Regularisation::consistent ||
        contact_solver.regularisation == Regularisation::macaulay);
-    const bool applies = has_contact && path_name == "condensed" &&
-                         carries_state && !scene.has_changing_rows();
+    // Automatic levels for the consistent AL only: the Macaulay AL's kink
+    // at p = 0 makes its diagonal scheme cycle from a carried state (Hertz
+    // at 24,962 dofs, doc/speed-accuracy.md); a number of levels still
+    // applies to it.
+    const bool applies =
+      has_contact && path_name == "condensed" &&
+      contact_solver.regularisation == Regularisation::consistent &&
+      !scene.has_changing_rows();
     const unsigned int levels = nested.levels(scene.global_refinements,
                                               system.n_displacement_dofs,
                                               dim,

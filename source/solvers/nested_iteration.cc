@@ -113,8 +113,8 @@ namespace hrcontact
       "global refinements, then carry its pressed set, multipliers and "
       "penalties up one level at a time (the answer is the fine mesh's own; "
       "only the number of Newton steps on it drops). 0: off. automatic: on "
-      "the condensed path with the consistent or Macaulay augmented "
-      "Lagrangian, from Minimum dofs up, as many levels as keep the coarsest "
+      "the condensed path with the consistent augmented Lagrangian (the "
+      "Macaulay one takes a number), from Minimum dofs up, as many levels as keep the coarsest "
       "at Coarsest level dofs or more. A number needs as many Global "
       "refinements.");
     prm.declare_entry("Minimum dofs",
