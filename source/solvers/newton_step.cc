@@ -395,6 +395,11 @@ namespace hrcontact
       statistics.tolerance = cg_tolerance;
     if (solver == "cg-amg" || partition.distributed())
       {
+        // The AMG's rigid-body modes read each dof's node and component.
+        AssertThrow(system.dof_node.size() == n_u &&
+                      system.dof_component.size() == n_u,
+                    ExcMessage("the Trilinos back end needs the dof -> node "
+                               "maps of HRAssembler::classify_rows"));
         distributed = std::make_unique<Distributed>();
       }
 
