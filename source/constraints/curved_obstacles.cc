@@ -125,7 +125,7 @@ namespace hrcontact
   void
   CurvedObstacles<dim>::collect(const BoundaryFace<dim> &face,
                                 const EquilibriumSystem &,
-                                std::vector<NodeConstraints<dim>> &nodes) const
+                                NodeConstraintMap<dim> &nodes) const
   {
     // The straight obstacle tangent at the nearest point of the surface.
     const CurvedObstacle &co = obstacles.at(face.boundary_id);

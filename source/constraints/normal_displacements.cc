@@ -56,10 +56,9 @@ namespace hrcontact
 
   template <int dim>
   void
-  BodyNormalConstraint<dim>::collect(
-    const BoundaryFace<dim>           &face,
-    const EquilibriumSystem           &system,
-    std::vector<NodeConstraints<dim>> &nodes) const
+  BodyNormalConstraint<dim>::collect(const BoundaryFace<dim> &face,
+                                     const EquilibriumSystem &system,
+                                     NodeConstraintMap<dim>  &nodes) const
   {
     // Bilateral normal constraints and unilateral boundary supports share
     // the node normal (area-weighted face normals).

@@ -75,10 +75,9 @@ namespace hrcontact
 
   template <int dim>
   void
-  PrescribedDisplacements<dim>::collect(
-    const BoundaryFace<dim>           &face,
-    const EquilibriumSystem           &system,
-    std::vector<NodeConstraints<dim>> &nodes) const
+  PrescribedDisplacements<dim>::collect(const BoundaryFace<dim> &face,
+                                        const EquilibriumSystem &system,
+                                        NodeConstraintMap<dim>  &nodes) const
   {
     const Prescription &pd = prescriptions.at(face.boundary_id);
     for (unsigned int v = 0; v < face.nodes.size(); ++v)

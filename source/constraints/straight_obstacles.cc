@@ -90,10 +90,9 @@ namespace hrcontact
 
   template <int dim>
   void
-  StraightObstacles<dim>::collect(
-    const BoundaryFace<dim> &face,
-    const EquilibriumSystem &,
-    std::vector<NodeConstraints<dim>> &nodes) const
+  StraightObstacles<dim>::collect(const BoundaryFace<dim> &face,
+                                  const EquilibriumSystem &,
+                                  NodeConstraintMap<dim> &nodes) const
   {
     // One constraint per obstacle at a node (several at a corner, eq. 11).
     const Obstacle &ob = obstacles.at(face.boundary_id);

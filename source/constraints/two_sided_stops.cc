@@ -98,9 +98,9 @@ namespace hrcontact
 
   template <int dim>
   void
-  TwoSidedStops<dim>::collect(const BoundaryFace<dim>           &face,
-                              const EquilibriumSystem           &system,
-                              std::vector<NodeConstraints<dim>> &nodes) const
+  TwoSidedStops<dim>::collect(const BoundaryFace<dim> &face,
+                              const EquilibriumSystem &system,
+                              NodeConstraintMap<dim>  &nodes) const
   {
     const int id = face.boundary_id;
     for (const unsigned int node : face.nodes)

@@ -379,73 +379,77 @@ namespace hrcontact
                                   const bool         lean_rows) const
   {
     const DoFHandler<dim> &dh_u = spaces.dof_handler_displacement;
-    const auto            &tria = dh_u.get_triangulation();
     system.dim                  = dim;
     system.n_displacement_dofs  = dh_u.n_dofs();
     system.n_stress_dofs        = spaces.dof_handler_stress.n_dofs();
 
-    // Nodes: the used vertices, numbered in vertex order.
-    std::vector<int> node_of_vertex(tria.n_vertices(), -1);
-    std::vector<std::array<types::global_dof_index, dim>> node_dofs;
-    std::vector<Point<dim>>                               node_points;
-    for (const auto &cell : dh_u.active_cell_iterators())
-      for (const auto v : cell->vertex_indices())
-        if (node_of_vertex[cell->vertex_index(v)] < 0)
-          {
-            node_of_vertex[cell->vertex_index(v)] = node_points.size();
-            std::array<types::global_dof_index, dim> dofs;
-            for (unsigned int d = 0; d < dim; ++d)
-              dofs[d] = cell->vertex_dof_index(v, d);
-            node_dofs.push_back(dofs);
-            node_points.push_back(cell->vertex(v));
-          }
-    const unsigned int n_nodes = node_points.size();
+    // Nodes: node n has the dofs dim n + d (EquilibriumSystem::dof_node),
+    // which also numbers them in the order the cells first reach them.
+    const unsigned int n_nodes = dh_u.n_dofs() / dim;
     system.node_coordinates.assign(n_nodes, {{0., 0., 0.}});
-    system.dof_node.assign(dh_u.n_dofs(), 0);
-    system.dof_component.assign(dh_u.n_dofs(), 0);
-    for (unsigned int n = 0; n < n_nodes; ++n)
+    auto node_dof = [](const unsigned int node, const unsigned int d) {
+      return types::global_dof_index(dim) * node + d;
+    };
+    for (const auto &cell : dh_u.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const auto v : cell->vertex_indices())
+          {
+            const auto node = cell->vertex_dof_index(v, 0) / dim;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                AssertThrow(cell->vertex_dof_index(v, d) == node_dof(node, d),
+                            ExcInternalError());
+                system.node_coordinates[node][d] = cell->vertex(v)[d];
+              }
+          }
+    auto node_point = [&](const unsigned int node) {
+      Point<dim> x;
       for (unsigned int d = 0; d < dim; ++d)
-        {
-          system.node_coordinates[n][d]         = node_points[n][d];
-          system.dof_node[node_dofs[n][d]]      = n;
-          system.dof_component[node_dofs[n][d]] = d;
-        }
+        x[d] = system.node_coordinates[node][d];
+      return x;
+    };
+
+    // The boundary faces some constraint kind acts on.
+    std::vector<BoundaryFace<dim>> faces;
+    {
+      const QGauss<dim - 1> centre(1);
+      FEFaceValues<dim>     fv_face(*spaces.fe_displacement,
+                                centre,
+                                update_normal_vectors | update_JxW_values);
+      for (const auto &cell : dh_u.active_cell_iterators())
+        if (!cell->is_artificial())
+          for (const auto f : cell->face_indices())
+            {
+              if (!cell->face(f)->at_boundary())
+                continue;
+              const types::boundary_id id = cell->face(f)->boundary_id();
+              if (std::none_of(scene.constraints.begin(),
+                               scene.constraints.end(),
+                               [id](const auto &source) {
+                                 return source->acts_on(id);
+                               }))
+                continue;
+              BoundaryFace<dim> face;
+              face.boundary_id = id;
+              for (const auto v : cell->face(f)->vertex_indices())
+                {
+                  face.nodes.push_back(cell->face(f)->vertex_dof_index(v, 0) /
+                                       dim);
+                  face.points.push_back(cell->face(f)->vertex(v));
+                }
+              fv_face.reinit(cell, f);
+              face.normal  = fv_face.normal_vector(0);
+              face.measure = fv_face.JxW(0);
+              faces.push_back(face);
+            }
+    }
 
     // What the constraint kinds ask of each node, face by face.
-    std::vector<NodeConstraints<dim>> constraints(n_nodes);
-    const QGauss<dim - 1>             centre(1);
-    FEFaceValues<dim>                 fv_face(*spaces.fe_displacement,
-                              centre,
-                              update_normal_vectors | update_JxW_values);
-    BoundaryFace<dim>                 face;
-    for (const auto &cell : dh_u.active_cell_iterators())
-      for (const auto f : cell->face_indices())
-        {
-          if (!cell->face(f)->at_boundary())
-            continue;
-          const types::boundary_id id = cell->face(f)->boundary_id();
-          if (std::none_of(scene.constraints.begin(),
-                           scene.constraints.end(),
-                           [id](const auto &source) {
-                             return source->acts_on(id);
-                           }))
-            continue;
-          face.boundary_id = id;
-          face.nodes.clear();
-          face.points.clear();
-          for (const auto v : cell->face(f)->vertex_indices())
-            {
-              face.nodes.push_back(
-                node_of_vertex[cell->face(f)->vertex_index(v)]);
-              face.points.push_back(node_points[face.nodes.back()]);
-            }
-          fv_face.reinit(cell, f);
-          face.normal  = fv_face.normal_vector(0);
-          face.measure = fv_face.JxW(0);
-          for (const auto &source : scene.constraints)
-            if (source->acts_on(id))
-              source->collect(face, system, constraints);
-        }
+    NodeConstraintMap<dim> constraints;
+    for (const auto &face : faces)
+      for (const auto &source : scene.constraints)
+        if (source->acts_on(face.boundary_id))
+          source->collect(face, system, constraints);
 
     system.rows.clear();
     system.free_rows.clear();
@@ -465,7 +469,7 @@ namespace hrcontact
       row.value      = value;
       row.unilateral = unilateral;
       for (unsigned int d = 0; d < dim; ++d)
-        row.combination.emplace_back(node_dofs[node][d],
+        row.combination.emplace_back(node_dof(node, d),
                                      dual ? (*dual)[d] : direction[d]);
       if (dual)
         for (unsigned int d = 0; d < dim; ++d)
@@ -479,145 +483,161 @@ namespace hrcontact
         .push_back(r);
     };
 
-    for (unsigned int node = 0; node < n_nodes; ++node)
-      {
-        const NodeConstraints<dim> &c = constraints[node];
-        if (lean_rows && c.obstacles.empty() && !c.own_row_source &&
-            !c.has_normal && c.obstacle < 0 && !c.any_prescribed())
+    auto classify_node = [&](const unsigned int          node,
+                             const NodeConstraints<dim> &c) {
+      if (lean_rows && c.obstacles.empty() && !c.own_row_source &&
+          !c.has_normal && c.obstacle < 0 && !c.any_prescribed())
+        {
+          // Implicit: the unit rows of the node's dofs.
+          system.n_free_rows += dim;
+          return;
+        }
+      std::vector<Tensor<1, dim>> taken; // directions already used
+      for (unsigned int d = 0; d < dim; ++d)
+        if (c.prescribed[d])
           {
-            // Implicit: the unit rows of the node's dofs.
-            system.n_free_rows += dim;
-            continue;
+            Tensor<1, dim> e;
+            e[d] = 1.;
+            add_row(node, e, RowClass::prescribed, c.prescribed_value[d]);
+            taken.push_back(e);
           }
-        std::vector<Tensor<1, dim>> taken; // directions already used
-        for (unsigned int d = 0; d < dim; ++d)
-          if (c.prescribed[d])
+      if (c.obstacles.size() > 1)
+        {
+          // A corner between obstacles (eq. 11): the normals n_i and free
+          // directions t completing them form the node's primal basis,
+          // rows w_i = n_i . u; the force rows are its dual basis, so that
+          // the nodal reaction is sum_i p_i n_i with every p_i <= 0.
+          const std::string where =
+            "Contact/Obstacles: " + system.describe_node(node);
+          if (c.has_normal || c.own_row_source || c.any_prescribed())
+            throw InputError(where +
+                             " touches several obstacles and also has a "
+                             "prescribed component, a normal constraint or "
+                             "a stop; a corner node takes obstacles only.");
+          if (c.obstacles.size() > dim)
+            throw InputError(where + " touches " +
+                             std::to_string(c.obstacles.size()) +
+                             " obstacles; at most " + std::to_string(dim) +
+                             " can meet at a node.");
+          std::vector<Tensor<1, dim>> basis, orthonormal;
+          for (const auto &[id, n, g] : c.obstacles)
             {
-              Tensor<1, dim> e;
-              e[d] = 1.;
-              add_row(node, e, RowClass::prescribed, c.prescribed_value[d]);
-              taken.push_back(e);
+              basis.push_back(n);
+              Tensor<1, dim> e = n;
+              for (const auto &o : orthonormal)
+                e -= (e * o) * o;
+              if (e.norm() < 1e-6)
+                throw InputError(where + " touches obstacles with linearly "
+                                         "dependent normals.");
+              orthonormal.push_back(e / e.norm());
             }
-        if (c.obstacles.size() > 1)
-          {
-            // A corner between obstacles (eq. 11): the normals n_i and free
-            // directions t completing them form the node's primal basis,
-            // rows w_i = n_i . u; the force rows are its dual basis, so that
-            // the nodal reaction is sum_i p_i n_i with every p_i <= 0.
-            const std::string where =
-              "Contact/Obstacles: " + system.describe_node(node);
-            if (c.has_normal || c.own_row_source || c.any_prescribed())
-              throw InputError(where +
-                               " touches several obstacles and also has a "
-                               "prescribed component, a normal constraint or "
-                               "a stop; a corner node takes obstacles only.");
-            if (c.obstacles.size() > dim)
-              throw InputError(where + " touches " +
-                               std::to_string(c.obstacles.size()) +
-                               " obstacles; at most " + std::to_string(dim) +
-                               " can meet at a node.");
-            std::vector<Tensor<1, dim>> basis, orthonormal;
-            for (const auto &[id, n, g] : c.obstacles)
-              {
-                basis.push_back(n);
-                Tensor<1, dim> e = n;
-                for (const auto &o : orthonormal)
-                  e -= (e * o) * o;
-                if (e.norm() < 1e-6)
-                  throw InputError(where + " touches obstacles with linearly "
-                                           "dependent normals.");
-                orthonormal.push_back(e / e.norm());
-              }
-            for (const auto &t : orthogonal_complement<dim>(orthonormal))
-              basis.push_back(t);
-            // Dual basis: the rows of (P^T)^{-1}... i.e. c_r . d_s = delta.
-            FullMatrix<double> P(dim, dim), Pinv(dim, dim);
-            for (unsigned int r = 0; r < dim; ++r)
+          for (const auto &t : orthogonal_complement<dim>(orthonormal))
+            basis.push_back(t);
+          // Dual basis: the rows of (P^T)^{-1}... i.e. c_r . d_s = delta.
+          FullMatrix<double> P(dim, dim), Pinv(dim, dim);
+          for (unsigned int r = 0; r < dim; ++r)
+            for (unsigned int d = 0; d < dim; ++d)
+              P(r, d) = basis[r][d];
+          Pinv.invert(P);
+          for (unsigned int r = 0; r < dim; ++r)
+            {
+              Tensor<1, dim> dual;
               for (unsigned int d = 0; d < dim; ++d)
-                P(r, d) = basis[r][d];
-            Pinv.invert(P);
-            for (unsigned int r = 0; r < dim; ++r)
+                dual[d] = Pinv(d, r);
+              const bool is_obstacle = r < c.obstacles.size();
+              add_row(node,
+                      basis[r],
+                      is_obstacle ? RowClass::contact : RowClass::free,
+                      is_obstacle ? std::get<2>(c.obstacles[r]) : 0.,
+                      is_obstacle,
+                      &dual);
+              if (is_obstacle)
+                system.rows.back().obstacle = std::get<0>(c.obstacles[r]);
+            }
+          return;
+        }
+      if (c.own_row_source)
+        {
+          // A kind with a row of its own at the node (a two-sided stop).
+          const OwnRow own =
+            c.own_row_source->own_row(node, node_point(node), c, system);
+          Tensor<1, dim> direction;
+          for (unsigned int d = 0; d < dim; ++d)
+            direction[d] = own.direction[d];
+          add_row(node, direction, RowClass::contact, own.value);
+          system.rows.back().law = own.law;
+          taken.push_back(direction);
+        }
+      if (c.has_normal && c.obstacle >= 0)
+        throw InputError("Supports: " + system.describe_node(node) +
+                         " has both a normal constraint (or boundary "
+                         "support) and an obstacle.");
+      if (c.has_normal || c.obstacle >= 0)
+        {
+          const bool unilateral  = (c.obstacle >= 0) || c.normal_is_unilateral;
+          const Tensor<1, dim> n = (c.obstacle >= 0) ?
+                                     c.obstacle_normal :
+                                     c.normal_sum / c.normal_sum.norm();
+          for (const auto &nf : c.face_normals)
+            if (nf * n < std::cos(numbers::PI / 4))
+              throw InputError(
+                "Supports/Normal displacements or Contact/Boundary "
+                "supports: " +
+                system.describe_node(node) +
+                " is a corner between faces whose normals differ by more "
+                "than 45 degrees; one normal cannot represent it. Prescribe "
+                "the displacement components there instead.");
+          // With prescribed components at the node, u.n <= g (or = g)
+          // only constrains the free part of u: n_free . u_free <= g -
+          // n . u-hat, n_free = n minus its prescribed-axis part. The row
+          // takes the unit direction of n_free and the scaled gap; if n_free
+          // vanishes, the prescribed values fix u.n and there is no row.
+          Tensor<1, dim> n_free = n;
+          double         g      = c.gap;
+          for (unsigned int d = 0; d < dim; ++d)
+            if (c.prescribed[d])
               {
-                Tensor<1, dim> dual;
-                for (unsigned int d = 0; d < dim; ++d)
-                  dual[d] = Pinv(d, r);
-                const bool is_obstacle = r < c.obstacles.size();
-                add_row(node,
-                        basis[r],
-                        is_obstacle ? RowClass::contact : RowClass::free,
-                        is_obstacle ? std::get<2>(c.obstacles[r]) : 0.,
-                        is_obstacle,
-                        &dual);
-                if (is_obstacle)
-                  system.rows.back().obstacle = std::get<0>(c.obstacles[r]);
+                g -= n[d] * c.prescribed_value[d];
+                n_free[d] = 0;
               }
-            continue;
-          }
-        if (c.own_row_source)
+          if (n_free.norm() > 1e-8)
+            {
+              const double length = n_free.norm();
+              add_row(node,
+                      n_free / length,
+                      RowClass::contact,
+                      g / length,
+                      unilateral);
+              if (c.obstacle >= 0)
+                system.rows.back().obstacle = c.obstacle;
+              taken.push_back(n_free / length);
+            }
+        }
+      // The free rows span the orthogonal complement of what is taken.
+      for (const auto &t : orthogonal_complement<dim>(taken))
+        {
+          add_row(node, t, RowClass::free, 0.);
+          taken.push_back(t);
+        }
+      AssertThrow(taken.size() == dim, ExcInternalError());
+    };
+    // Lean rows: only the nodes some face touched can have explicit rows.
+    if (lean_rows)
+      for (const auto &[node, c] : constraints)
+        classify_node(node, c);
+    else
+      {
+        const NodeConstraints<dim> none;
+        for (unsigned int node = 0; node < n_nodes; ++node)
           {
-            // A kind with a row of its own at the node (a two-sided stop).
-            const OwnRow own =
-              c.own_row_source->own_row(node, node_points[node], c, system);
-            Tensor<1, dim> direction;
-            for (unsigned int d = 0; d < dim; ++d)
-              direction[d] = own.direction[d];
-            add_row(node, direction, RowClass::contact, own.value);
-            system.rows.back().law = own.law;
-            taken.push_back(direction);
+            const auto it = constraints.find(node);
+            classify_node(node, it == constraints.end() ? none : it->second);
           }
-        if (c.has_normal && c.obstacle >= 0)
-          throw InputError("Supports: " + system.describe_node(node) +
-                           " has both a normal constraint (or boundary "
-                           "support) and an obstacle.");
-        if (c.has_normal || c.obstacle >= 0)
-          {
-            const bool unilateral = (c.obstacle >= 0) || c.normal_is_unilateral;
-            const Tensor<1, dim> n = (c.obstacle >= 0) ?
-                                       c.obstacle_normal :
-                                       c.normal_sum / c.normal_sum.norm();
-            for (const auto &nf : c.face_normals)
-              if (nf * n < std::cos(numbers::PI / 4))
-                throw InputError(
-                  "Supports/Normal displacements or Contact/Boundary "
-                  "supports: " +
-                  system.describe_node(node) +
-                  " is a corner between faces whose normals differ by more "
-                  "than 45 degrees; one normal cannot represent it. Prescribe "
-                  "the displacement components there instead.");
-            // With prescribed components at the node, u.n <= g (or = g)
-            // only constrains the free part of u: n_free . u_free <= g -
-            // n . u-hat, n_free = n minus its prescribed-axis part. The row
-            // takes the unit direction of n_free and the scaled gap; if n_free
-            // vanishes, the prescribed values fix u.n and there is no row.
-            Tensor<1, dim> n_free = n;
-            double         g      = c.gap;
-            for (unsigned int d = 0; d < dim; ++d)
-              if (c.prescribed[d])
-                {
-                  g -= n[d] * c.prescribed_value[d];
-                  n_free[d] = 0;
-                }
-            if (n_free.norm() > 1e-8)
-              {
-                const double length = n_free.norm();
-                add_row(node,
-                        n_free / length,
-                        RowClass::contact,
-                        g / length,
-                        unilateral);
-                if (c.obstacle >= 0)
-                  system.rows.back().obstacle = c.obstacle;
-                taken.push_back(n_free / length);
-              }
-          }
-        // The free rows span the orthogonal complement of what is taken.
-        for (const auto &t : orthogonal_complement<dim>(taken))
-          {
-            add_row(node, t, RowClass::free, 0.);
-            taken.push_back(t);
-          }
-        AssertThrow(taken.size() == dim, ExcInternalError());
       }
+    if (lean_rows)
+      system.n_free_rows = system.n_displacement_dofs -
+                           system.contact_rows.size() -
+                           system.prescribed_rows.size();
     AssertThrow(system.contact_rows.size() + system.prescribed_rows.size() +
                     system.n_free_rows ==
                   system.n_displacement_dofs,

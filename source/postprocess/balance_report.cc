@@ -44,7 +44,7 @@ namespace hrcontact
       if (!stored[i])
         {
           scale = std::max(scale, std::abs(system.load[i]));
-          load[system.dof_component[i]] += system.load[i];
+          load[system.dof_component(i)] += system.load[i];
         }
     auto add_reaction = [&](const unsigned int r, const double value) {
       scale = std::max(scale, std::abs(value));

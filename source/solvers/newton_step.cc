@@ -395,11 +395,10 @@ namespace hrcontact
       statistics.tolerance = cg_tolerance;
     if (solver == "cg-amg" || partition.distributed())
       {
-        // The AMG's rigid-body modes read each dof's node and component.
-        AssertThrow(system.dof_node.size() == n_u &&
-                      system.dof_component.size() == n_u,
-                    ExcMessage("the Trilinos back end needs the dof -> node "
-                               "maps of HRAssembler::classify_rows"));
+        // The AMG's rigid-body modes read each dof's node coordinates.
+        AssertThrow(system.node_coordinates.size() * system.dim == n_u,
+                    ExcMessage("the Trilinos back end needs the node "
+                               "coordinates of HRAssembler::classify_rows"));
         distributed = std::make_unique<Distributed>();
       }
 
@@ -959,8 +958,8 @@ namespace hrcontact
       for (int k = 0; k < map.NumMyElements(); ++k)
         {
           const auto         i = TrilinosWrappers::global_index(map, k);
-          const unsigned int c = system.dof_component[i];
-          const auto        &x = system.node_coordinates[system.dof_node[i]];
+          const unsigned int c = system.dof_component(i);
+          const auto        &x = system.node_coordinates[system.dof_node(i)];
           for (unsigned int m = 0; m < n_modes; ++m)
             (*d.modes)[m][k] = 0;
           (*d.modes)[c][k] = 1; // translations

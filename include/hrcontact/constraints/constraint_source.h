@@ -13,6 +13,7 @@
 
 #include <array>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <tuple>
@@ -67,6 +68,15 @@ namespace hrcontact
           const dealii::Tensor<1, dim>    &normal,
           const double                     gap);
   };
+
+  /**
+   * The constraints of the nodes some boundary face touches, by node
+   * (EquilibriumSystem numbering); nodes no source touched are absent. A map
+   * rather than one entry per node: the boundary is a surface, and with a
+   * distributed mesh no process knows every node.
+   */
+  template <int dim>
+  using NodeConstraintMap = std::map<unsigned int, NodeConstraints<dim>>;
 
   /** One boundary face as the constraint sources see it. */
   template <int dim>
@@ -132,9 +142,9 @@ namespace hrcontact
 
     /** Record what it asks of the nodes of one of its faces. */
     virtual void
-    collect(const BoundaryFace<dim>           &face,
-            const EquilibriumSystem           &system,
-            std::vector<NodeConstraints<dim>> &nodes) const = 0;
+    collect(const BoundaryFace<dim> &face,
+            const EquilibriumSystem &system,
+            NodeConstraintMap<dim>  &nodes) const = 0;
 
     /** The row of its own at a node that collect() marked (a stop). */
     virtual OwnRow

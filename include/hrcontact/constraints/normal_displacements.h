@@ -33,9 +33,9 @@ namespace hrcontact
     bool
     acts_on(const dealii::types::boundary_id id) const override;
     void
-    collect(const BoundaryFace<dim>           &face,
-            const EquilibriumSystem           &system,
-            std::vector<NodeConstraints<dim>> &nodes) const override;
+    collect(const BoundaryFace<dim> &face,
+            const EquilibriumSystem &system,
+            NodeConstraintMap<dim>  &nodes) const override;
 
   protected:
     /** The entry subsection/name, whether it is unilateral, and what an

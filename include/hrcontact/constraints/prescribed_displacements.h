@@ -33,9 +33,9 @@ namespace hrcontact
     bool
     is_normal_kind() const override;
     void
-    collect(const BoundaryFace<dim>           &face,
-            const EquilibriumSystem           &system,
-            std::vector<NodeConstraints<dim>> &nodes) const override;
+    collect(const BoundaryFace<dim> &face,
+            const EquilibriumSystem &system,
+            NodeConstraintMap<dim>  &nodes) const override;
 
   private:
     struct Prescription

@@ -30,9 +30,9 @@ namespace hrcontact
     bool
     acts_on(const dealii::types::boundary_id id) const override;
     void
-    collect(const BoundaryFace<dim>           &face,
-            const EquilibriumSystem           &system,
-            std::vector<NodeConstraints<dim>> &nodes) const override;
+    collect(const BoundaryFace<dim> &face,
+            const EquilibriumSystem &system,
+            NodeConstraintMap<dim>  &nodes) const override;
 
   private:
     struct Obstacle

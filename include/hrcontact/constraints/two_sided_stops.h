@@ -37,9 +37,9 @@ namespace hrcontact
             const NodeConstraints<dim> &constraints,
             const EquilibriumSystem    &system) const override;
     void
-    collect(const BoundaryFace<dim>           &face,
-            const EquilibriumSystem           &system,
-            std::vector<NodeConstraints<dim>> &nodes) const override;
+    collect(const BoundaryFace<dim> &face,
+            const EquilibriumSystem &system,
+            NodeConstraintMap<dim>  &nodes) const override;
 
   private:
     struct Stop

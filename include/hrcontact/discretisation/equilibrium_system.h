@@ -159,9 +159,23 @@ namespace hrcontact
     bool lean_rows = false;
     /** Every free row, stored or implicit (eq. 38's n). */
     unsigned int n_free_rows = 0;
-    /** The node and the component of every displacement dof. */
-    std::vector<unsigned int>  dof_node;
-    std::vector<unsigned char> dof_component;
+    /**
+     * The node and the component of a displacement dof. The dofs of a node
+     * are consecutive (Q1^dim, numbered vertex by vertex, never renumbered;
+     * HRAssembler::classify_rows checks it), so node n has the dofs dim n
+     * ... dim n + dim - 1, in the serial and the distributed numbering
+     * alike, and no map is stored.
+     */
+    unsigned int
+    dof_node(const dealii::types::global_dof_index i) const
+    {
+      return i / dim;
+    }
+    unsigned int
+    dof_component(const dealii::types::global_dof_index i) const
+    {
+      return i % dim;
+    }
 
     /**
      * B s - f over every cell, from storage or recomputed: the equilibrium
