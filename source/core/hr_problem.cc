@@ -1,5 +1,7 @@
 #include <deal.II/base/utilities.h>
 
+#include <deal.II/distributed/tria.h>
+
 #include <hrcontact/core/hr_problem.h>
 #include <hrcontact/core/run.h>
 #include <hrcontact/discretisation/displacement_stiffness.h>
@@ -61,9 +63,27 @@ namespace hrcontact
   {
     {
       TimerOutput::Scope t(timer, "mesh and dofs");
-      scene.create_mesh(triangulation);
-      spaces.setup(triangulation);
-      partition = partition_with_p4est(triangulation,
+      // Several processes on the condensed path: each keeps only its part
+      // of the mesh. What needs every cell on every process keeps the
+      // serial mesh: the dense null-space path, a random distortion (p4est
+      // would distort each part differently) and postprocessors that walk
+      // across the whole mesh.
+      const unsigned int n_processes =
+        Utilities::MPI::job_supports_mpi() ?
+          Utilities::MPI::n_mpi_processes(mpi_communicator) :
+          1;
+      distributed_mesh = n_processes > 1 && reduction.path != "null-space" &&
+                         scene.distortion == 0 &&
+                         !postprocessors.needs_replicated_mesh(scene);
+      if (distributed_mesh)
+        triangulation =
+          std::make_unique<parallel::distributed::Triangulation<dim>>(
+            mpi_communicator);
+      else
+        triangulation = std::make_unique<Triangulation<dim>>();
+      scene.create_mesh(*triangulation);
+      spaces.setup(*triangulation);
+      partition = partition_with_p4est(*triangulation,
                                        spaces.dof_handler_displacement,
                                        mpi_communicator);
     }
@@ -71,23 +91,27 @@ namespace hrcontact
     log << "  "
         << (dim == 2 ? "2D (" + scene.plane_condition_name() + ")" : "3D")
         << ", stress element " << spaces.stress_element_name << '\n'
-        << "  mesh: " << triangulation.n_active_cells() << " cells, "
-        << triangulation.n_used_vertices() << " nodes\n"
+        << "  mesh: " << triangulation->n_global_active_cells() << " cells, "
+        << spaces.dof_handler_displacement.n_dofs() / dim << " nodes\n"
         << "  dofs: " << spaces.dof_handler_displacement.n_dofs()
         << " displacement, " << spaces.dof_handler_stress.n_dofs() << " stress"
         << std::endl;
     if (partition.distributed())
-      log << "  parallel: " << partition.describe() << std::endl;
+      log << "  parallel: " << partition.describe()
+          << (distributed_mesh ? ", distributed mesh" : ", replicated mesh")
+          << std::endl;
     {
       TimerOutput::Scope t(timer, "assembly");
       // The dense bytes fall as the free rows grow, so with every dof free
       // they bound those of any classification from below: above the limit
       // the path is condensed whatever the rows, and the free rows of
       // unconstrained nodes can stay implicit.
+      // A distributed mesh is always lean: no process knows every node.
       const bool lean_rows =
-        reduction.path != "null-space" &&
-        dense_reduction_bytes(spaces.dof_handler_displacement.n_dofs()) >
-          reduction.automatic_dense_limit;
+        distributed_mesh ||
+        (reduction.path != "null-space" &&
+         dense_reduction_bytes(spaces.dof_handler_displacement.n_dofs()) >
+           reduction.automatic_dense_limit);
       HRAssembler<dim>(scene, spaces).classify_rows(system, lean_rows);
     }
     mark_memory("row classification");
@@ -129,7 +153,7 @@ namespace hrcontact
         "Contact/Update curved obstacles = true needs Equilibrium "
         "reduction/Path = condensed (or automatic): the null-space "
         "reduction is built once from the initial constraint directions.");
-    if (displacement_al || relinearise)
+    if (displacement_al || relinearise || distributed_mesh)
       path = "condensed";
     if (path == "automatic")
       path = (dense_bytes <= reduction.automatic_dense_limit) ? "null-space" :
@@ -367,8 +391,8 @@ namespace hrcontact
     // The nodal compliance of the finer mesh against the coarser one (2D:
     // the same; 3D: twice), and reactions per tributary area.
     const double compliance_scale =
-      scene.material->nodal_compliance(triangulation) /
-      coarse.scene.material->nodal_compliance(coarse.triangulation);
+      scene.material->nodal_compliance(*triangulation) /
+      coarse.scene.material->nodal_compliance(*coarse.triangulation);
     contact_solver.start_from(transfer_contact_state(coarse.system,
                                                      *coarse.results().contact,
                                                      system,
@@ -401,7 +425,7 @@ namespace hrcontact
     for (unsigned int i = 0; i < system.load.size(); ++i)
       load_scale = std::max(load_scale, std::abs(system.load[i]));
     contact_solver.set_nodal_compliance(
-      scene.material->nodal_compliance(triangulation));
+      scene.material->nodal_compliance(*triangulation));
     r.free_rigid_motions = rigid_motions_held_only_by_contact(system);
     contact_solver.held_only_by_contact = (r.free_rigid_motions > 0);
     // Kinds whose rows follow the configuration (curved obstacles).
@@ -431,16 +455,22 @@ namespace hrcontact
     Results<dim> &r = results_;
     path.stresses(r.stress);
     path.displacements(r.contact_w, r.displacement);
-    r.contact_reactions.clear();
-    for (const unsigned int row : system.contact_rows)
-      r.contact_reactions.push_back(
-        system.row_times(system.rows[row], r.stress) -
-        system.row_load(system.rows[row]));
-    r.support_reactions.clear();
-    for (const unsigned int row : system.prescribed_rows)
-      r.support_reactions.push_back(
-        system.row_times(system.rows[row], r.stress) -
-        system.row_load(system.rows[row]));
+    // The reactions B~_r s - f~_r, each computed by the owner of its node
+    // (on a distributed mesh only it has every cell around the node).
+    auto reactions = [&](const std::vector<unsigned int> &rows,
+                         std::vector<double>             &values) {
+      values.assign(rows.size(), 0.);
+      for (unsigned int k = 0; k < rows.size(); ++k)
+        {
+          const EquilibriumRow &row = system.rows[rows[k]];
+          if (partition.owned.is_element(row.combination.front().first))
+            values[k] = system.row_times(row, r.stress) - system.row_load(row);
+        }
+      if (partition.distributed())
+        Utilities::MPI::sum(values, partition.communicator, values);
+    };
+    reactions(system.contact_rows, r.contact_reactions);
+    reactions(system.prescribed_rows, r.support_reactions);
   }
 
   template <int dim>
@@ -453,7 +483,7 @@ namespace hrcontact
     summary.add("dimension", dim);
     summary.add("plane_condition", scene.plane_condition_name());
     summary.add("stress_element", spaces.stress_element_name);
-    summary.add("cells", triangulation.n_active_cells());
+    summary.add("cells", triangulation->n_global_active_cells());
     summary.add("displacement_dofs", system.n_displacement_dofs);
     summary.add("stress_dofs", system.n_stress_dofs);
     summary.add("free_rows", system.n_free_rows);

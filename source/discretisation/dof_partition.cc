@@ -1,3 +1,5 @@
+#include <deal.II/dofs/dof_tools.h>
+
 #include <deal.II/grid/grid_tools.h>
 
 #include <deal.II/distributed/tria.h>
@@ -54,6 +56,25 @@ namespace hrcontact
     if (n_processes == 1)
       return serial_partition(dof_handler.n_dofs(),
                               triangulation.n_active_cells());
+
+    // A distributed mesh: its own ownership, cell by cell (indices of this
+    // process's active cells, artificial ones included and not owned).
+    if (dynamic_cast<const parallel::distributed::Triangulation<dim> *>(
+          &triangulation))
+      {
+        DofPartition partition;
+        partition.communicator = communicator;
+        partition.n_processes  = n_processes;
+        partition.process      = Utilities::MPI::this_mpi_process(communicator);
+        partition.owned        = dof_handler.locally_owned_dofs();
+        DoFTools::extract_locally_relevant_dofs(dof_handler,
+                                                partition.relevant);
+        partition.owned_cell.assign(triangulation.n_active_cells(), false);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          partition.owned_cell[cell->active_cell_index()] =
+            cell->is_locally_owned();
+        return partition;
+      }
 
     const unsigned int finest = triangulation.n_levels() - 1;
     for (const auto &cell : triangulation.active_cell_iterators())

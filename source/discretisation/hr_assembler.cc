@@ -8,6 +8,8 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <deal.II/distributed/tria_base.h>
+
 #include <hrcontact/constraints/constraint_law.h>
 #include <hrcontact/constraints/constraint_source.h>
 #include <hrcontact/discretisation/hr_assembler.h>
@@ -98,7 +100,8 @@ namespace hrcontact
     for (const auto &cu : dh_u.active_cell_iterators())
       {
         blocks.cell = cu->active_cell_index();
-        if (!filter(blocks.cell))
+        // A distributed mesh: only this process's and its ghost cells.
+        if (cu->is_artificial() || !filter(blocks.cell))
           {
             ++cs;
             continue;
@@ -252,13 +255,14 @@ namespace hrcontact
         system.stored_cell.assign(n_cells, false);
         std::vector<types::global_dof_index> du;
         for (const auto &cu : dh_u.active_cell_iterators())
-          {
-            du.resize(cu->get_fe().n_dofs_per_cell());
-            cu->get_dof_indices(du);
-            for (const auto i : du)
-              if (constrained[i])
-                system.stored_cell[cu->active_cell_index()] = true;
-          }
+          if (!cu->is_artificial())
+            {
+              du.resize(cu->get_fe().n_dofs_per_cell());
+              cu->get_dof_indices(du);
+              for (const auto i : du)
+                if (constrained[i])
+                  system.stored_cell[cu->active_cell_index()] = true;
+            }
       }
     auto stored = [&](const unsigned int c) { return system.is_stored(c); };
     auto owned  = [&](const unsigned int c) {
@@ -271,7 +275,7 @@ namespace hrcontact
       auto cs = spaces.dof_handler_stress.begin_active();
       for (const auto &cu : dh_u.active_cell_iterators())
         {
-          if (stored(cu->active_cell_index()))
+          if (!cu->is_artificial() && stored(cu->active_cell_index()))
             {
               du.resize(cu->get_fe().n_dofs_per_cell());
               ds.resize(cs->get_fe().n_dofs_per_cell());
@@ -390,11 +394,20 @@ namespace hrcontact
     auto node_dof = [](const unsigned int node, const unsigned int d) {
       return types::global_dof_index(dim) * node + d;
     };
+    // A distributed mesh: each process knows its own and its ghost cells;
+    // the owner of a node writes its coordinates and the sum replicates
+    // them (24 bytes a node; the rigid-body modes and the rows read them).
+    const auto *parallel_mesh =
+      dynamic_cast<const parallel::TriangulationBase<dim> *>(
+        &dh_u.get_triangulation());
+    const IndexSet &owned_dofs = dh_u.locally_owned_dofs();
     for (const auto &cell : dh_u.active_cell_iterators())
       if (!cell->is_artificial())
         for (const auto v : cell->vertex_indices())
           {
             const auto node = cell->vertex_dof_index(v, 0) / dim;
+            if (parallel_mesh && !owned_dofs.is_element(node_dof(node, 0)))
+              continue;
             for (unsigned int d = 0; d < dim; ++d)
               {
                 AssertThrow(cell->vertex_dof_index(v, d) == node_dof(node, d),
@@ -402,6 +415,14 @@ namespace hrcontact
                 system.node_coordinates[node][d] = cell->vertex(v)[d];
               }
           }
+    if (parallel_mesh)
+      {
+        double           *first = system.node_coordinates.front().data();
+        const std::size_t n     = 3 * system.node_coordinates.size();
+        const ArrayView<const double> values(first, n);
+        const ArrayView<double>       sums(first, n);
+        Utilities::MPI::sum(values, parallel_mesh->get_communicator(), sums);
+      }
     auto node_point = [&](const unsigned int node) {
       Point<dim> x;
       for (unsigned int d = 0; d < dim; ++d)
@@ -416,8 +437,9 @@ namespace hrcontact
       FEFaceValues<dim>     fv_face(*spaces.fe_displacement,
                                 centre,
                                 update_normal_vectors | update_JxW_values);
+      // Each face from the owner of its cell (every cell on a serial mesh).
       for (const auto &cell : dh_u.active_cell_iterators())
-        if (!cell->is_artificial())
+        if (cell->is_locally_owned())
           for (const auto f : cell->face_indices())
             {
               if (!cell->face(f)->at_boundary())
@@ -443,6 +465,50 @@ namespace hrcontact
               faces.push_back(face);
             }
     }
+
+    // A distributed mesh: every process classifies the whole boundary (a
+    // surface), so that the rows are the same everywhere; the faces are
+    // gathered in process order.
+    if (parallel_mesh)
+      {
+        std::vector<double> packed;
+        for (const auto &face : faces)
+          {
+            packed.push_back(face.boundary_id);
+            packed.push_back(face.nodes.size());
+            for (unsigned int v = 0; v < face.nodes.size(); ++v)
+              {
+                packed.push_back(face.nodes[v]);
+                for (unsigned int d = 0; d < dim; ++d)
+                  packed.push_back(face.points[v][d]);
+              }
+            for (unsigned int d = 0; d < dim; ++d)
+              packed.push_back(face.normal[d]);
+            packed.push_back(face.measure);
+          }
+        faces.clear();
+        for (const auto &part :
+             Utilities::MPI::all_gather(parallel_mesh->get_communicator(),
+                                        packed))
+          for (std::size_t k = 0; k < part.size();)
+            {
+              BoundaryFace<dim> face;
+              face.boundary_id     = static_cast<types::boundary_id>(part[k++]);
+              const unsigned int n = static_cast<unsigned int>(part[k++]);
+              for (unsigned int v = 0; v < n; ++v)
+                {
+                  face.nodes.push_back(static_cast<unsigned int>(part[k++]));
+                  Point<dim> x;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    x[d] = part[k++];
+                  face.points.push_back(x);
+                }
+              for (unsigned int d = 0; d < dim; ++d)
+                face.normal[d] = part[k++];
+              face.measure = part[k++];
+              faces.push_back(face);
+            }
+      }
 
     // What the constraint kinds ask of each node, face by face.
     NodeConstraintMap<dim> constraints;

@@ -1,3 +1,7 @@
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/distributed/tria_base.h>
+
 #include <hrcontact/material/linear_elasticity.h>
 
 #include <cmath>
@@ -109,10 +113,17 @@ namespace hrcontact
       c_h *= 1 - nu * nu;
     if (dim == 3)
       {
+        // Each process its own cells (all of a serial mesh), then the sum.
         double volume = 0;
         for (const auto &cell : triangulation.active_cell_iterators())
-          volume += cell->measure();
-        c_h /= std::cbrt(volume / triangulation.n_active_cells());
+          if (cell->is_locally_owned())
+            volume += cell->measure();
+        if (const auto *parallel_mesh =
+              dynamic_cast<const parallel::TriangulationBase<dim> *>(
+                &triangulation))
+          volume =
+            Utilities::MPI::sum(volume, parallel_mesh->get_communicator());
+        c_h /= std::cbrt(volume / triangulation.n_global_active_cells());
       }
     return c_h;
   }

@@ -135,6 +135,24 @@ namespace hrcontact
       }
   }
 
+  template <int dim>
+  bool
+  Postprocessor<dim>::needs_replicated_mesh(const Scene<dim> &) const
+  {
+    return false;
+  }
+
+  template <int dim>
+  bool
+  PostprocessorManager<dim>::needs_replicated_mesh(
+    const Scene<dim> &scene) const
+  {
+    for (const auto &p : postprocessors)
+      if (p->needs_replicated_mesh(scene))
+        return true;
+    return false;
+  }
+
   template class Postprocessor<2>;
   template class Postprocessor<3>;
   template class PostprocessorManager<2>;

@@ -59,6 +59,13 @@ namespace hrcontact
   }
 
   template <int dim>
+  bool
+  TunnelLiningReport<dim>::needs_replicated_mesh(const Scene<dim> &scene) const
+  {
+    return dim == 2 && scene.lining;
+  }
+
+  template <int dim>
   void
   TunnelLiningReport<dim>::execute(const Results<dim> &results,
                                    PostprocessOutput  &output)

@@ -897,12 +897,17 @@ namespace hrcontact
             s[ds[i]] = sum;
           }
       }
-    p.resize(system.contact_rows.size());
+    // p of each row by the owner of its node, the only process that has
+    // every cell around it on a distributed mesh; the sum replicates p.
+    p.assign(system.contact_rows.size(), 0.);
     for (unsigned int i = 0; i < system.contact_rows.size(); ++i)
       {
         const EquilibriumRow &row = system.rows[system.contact_rows[i]];
-        p[i] = system.row_times(row, s) - system.row_load(row);
+        if (owned(row))
+          p[i] = system.row_times(row, s) - system.row_load(row);
       }
+    if (partition.distributed())
+      Utilities::MPI::sum(p, partition.communicator, p);
   }
 
   void

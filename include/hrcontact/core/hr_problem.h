@@ -42,11 +42,14 @@ namespace hrcontact
     declare_parameters(dealii::ParameterHandler &prm);
 
     /**
-     * A run on the processes of the communicator: the mesh, the HR blocks
-     * and the contact iteration are replicated; with several processes the
-     * condensed path's linear algebra is distributed by a p4est partition,
-     * process 0 writes the result files and each process its piece of
-     * solution.pvtu.
+     * A run on the processes of the communicator. With several processes
+     * the condensed path runs on a parallel::distributed::Triangulation:
+     * each process assembles and solves for its own cells, and the contact
+     * rows (a surface) and the augmented Lagrangian are replicated; process
+     * 0 writes the result files and each process its piece of
+     * solution.pvtu. The dense null-space path (the serial reference), a
+     * randomly distorted mesh and the tunnel lining's section forces keep a
+     * replicated serial mesh.
      */
     explicit HRProblem(dealii::ParameterHandler &prm,
                        const MPI_Comm            communicator = MPI_COMM_WORLD);
@@ -117,17 +120,24 @@ namespace hrcontact
      * iteration (a copy: the handler need not outlive the constructor).
      */
     std::string parameter_text;
-    /** Declared before the spaces, whose DoFHandlers refer to it. */
-    dealii::Triangulation<dim> triangulation;
-    Scene<dim>                 scene;
-    MixedSpaces<dim>           spaces;
-    EquilibriumReduction       reduction;
-    LinearSolverSettings       linear_solver;
-    AugmentedLagrangianSolver  contact_solver;
-    PostprocessorManager<dim>  postprocessors;
-    OutputSettings             output;
-    NestedIterationSettings    nested;
-    EquilibriumSystem          system;
+    /**
+     * The mesh: a parallel::distributed::Triangulation when several
+     * processes run the condensed path (each keeps its own cells, a layer of
+     * ghost cells and the coarse mesh), else a serial one. Declared before
+     * the spaces, whose DoFHandlers refer to it.
+     */
+    std::unique_ptr<dealii::Triangulation<dim>> triangulation;
+    /** Whether `triangulation` is the distributed one. */
+    bool                      distributed_mesh = false;
+    Scene<dim>                scene;
+    MixedSpaces<dim>          spaces;
+    EquilibriumReduction      reduction;
+    LinearSolverSettings      linear_solver;
+    AugmentedLagrangianSolver contact_solver;
+    PostprocessorManager<dim> postprocessors;
+    OutputSettings            output;
+    NestedIterationSettings   nested;
+    EquilibriumSystem         system;
     /** The p4est partition of the displacement dofs and cells. */
     DofPartition        partition;
     Results<dim>        results_;

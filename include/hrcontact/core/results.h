@@ -45,13 +45,18 @@ namespace hrcontact
     const EquilibriumSystem &system;
     const DofPartition      &partition;
 
+    /** The mesh: on several processes a
+     * parallel::distributed::Triangulation, whose n_active_cells() counts
+     * only this process's own, ghost and artificial cells
+     * (n_global_active_cells() counts the mesh). */
     const dealii::Triangulation<dim> &
     triangulation() const
     {
       return spaces.dof_handler_displacement.get_triangulation();
     }
 
-    /** The stresses s (stress dofs) and displacements u (eq. 51). */
+    /** The stresses s (stress dofs) and displacements u (eq. 51), complete
+     * on every process (in the mesh's numbering). */
     dealii::Vector<double> stress, displacement;
     /** Normal displacement w_n per Q row (g + mu after the last update). */
     std::vector<double> contact_w;

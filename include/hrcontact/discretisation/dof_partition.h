@@ -15,10 +15,10 @@ namespace hrcontact
 {
   /**
    * Which displacement dofs and cells one MPI process owns in the condensed
-   * path's distributed linear algebra, in the numbering of the (replicated)
-   * serial DoFHandler. The mesh, the HR blocks and the contact rows stay
-   * replicated on every process; the stiffness K, its constraints, the AMG
-   * hierarchy and the CG vectors are distributed by this partition.
+   * path's distributed linear algebra: read from the DoFHandler of a
+   * distributed mesh, or mapped from p4est onto a replicated serial mesh.
+   * The stiffness K, its constraints, the AMG hierarchy, the CG vectors and
+   * the cell work are distributed by it; the contact rows stay replicated.
    */
   struct DofPartition
   {
@@ -54,12 +54,15 @@ namespace hrcontact
   serial_partition(const unsigned int n_dofs, const unsigned int n_cells);
 
   /**
-   * The partition of deal.II's p4est forest: a
-   * parallel::distributed::Triangulation is built from the coarse mesh of
-   * the serial one and refined to the same level; its cells (matched by
-   * CellId) and its dof ownership are carried over to the serial numbering.
-   * The serial mesh must be uniformly refined (every scene is). With one
-   * process this is serial_partition().
+   * The partition of deal.II's p4est forest. On a
+   * parallel::distributed::Triangulation it is the mesh's own (owned and
+   * locally relevant dofs, owned cells by this process's active cell
+   * index). On a serial mesh under MPI (kept where every process needs
+   * every cell), a p4est forest is built from its coarse mesh and refined to
+   * the same level, and its cells (matched by their child paths) and dof
+   * ownership are carried over to the serial numbering; the serial mesh
+   * must be uniformly refined (every scene is). With one process this is
+   * serial_partition().
    */
   template <int dim>
   DofPartition

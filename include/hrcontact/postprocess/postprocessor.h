@@ -58,6 +58,13 @@ namespace hrcontact
     /** Compute and report. */
     virtual void
     execute(const Results<dim> &results, PostprocessOutput &output) = 0;
+    /**
+     * Whether it needs every cell of the mesh on every process for this
+     * scene (a walk across the mesh), so that a parallel run keeps the
+     * serial mesh. Most work on each process's own cells and sum.
+     */
+    virtual bool
+    needs_replicated_mesh(const Scene<dim> &scene) const;
   };
 
   /**
@@ -96,6 +103,9 @@ namespace hrcontact
     /** Run them in order. */
     void
     execute(const Results<dim> &results, PostprocessOutput &output) const;
+    /** Whether one of them needs every cell on every process. */
+    bool
+    needs_replicated_mesh(const Scene<dim> &scene) const;
 
     /** The names registered, in `all` order. */
     static std::vector<std::string>

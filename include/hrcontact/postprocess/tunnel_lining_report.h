@@ -26,6 +26,9 @@ namespace hrcontact
     skip_reason(const Results<dim> &results) const override;
     void
     execute(const Results<dim> &results, PostprocessOutput &output) override;
+    /** The section forces walk along lines across the lining's cells. */
+    bool
+    needs_replicated_mesh(const Scene<dim> &scene) const override;
 
   private:
     unsigned int n_sections = 120;
