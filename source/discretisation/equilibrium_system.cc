@@ -66,6 +66,27 @@ namespace hrcontact
   }
 
   void
+  EquilibriumSystem::for_each_cell_dofs(
+    const std::function<bool(unsigned int)> &filter,
+    const std::function<void(unsigned int,
+                             const std::vector<types::global_dof_index> &)>
+      &worker) const
+  {
+    bool all_stored = true;
+    for (unsigned int c = 0; c < n_cells() && all_stored; ++c)
+      all_stored = !filter(c) || is_stored(c);
+    if (!all_stored)
+      {
+        Assert(recompute_cell_dofs, ExcInternalError());
+        recompute_cell_dofs(filter, worker);
+        return;
+      }
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      if (filter(c))
+        worker(c, cell_displacement_dofs[c]);
+  }
+
+  void
   EquilibriumSystem::equilibrium_residual(const Vector<double> &s,
                                           Vector<double>       &residual) const
   {

@@ -344,7 +344,10 @@ namespace hrcontact
     if (lean)
       set_recompute(system);
     else
-      system.recompute_cell_blocks = nullptr;
+      {
+        system.recompute_cell_blocks = nullptr;
+        system.recompute_cell_dofs   = nullptr;
+      }
   }
 
   template <int dim>
@@ -360,6 +363,21 @@ namespace hrcontact
         HRAssembler<dim> assembler(scene_, spaces_);
         assembler.stress_state = state;
         assembler.for_each_cell(filter, worker);
+      };
+    const DoFHandler<dim> &dh_u = spaces.dof_handler_displacement;
+    system.recompute_cell_dofs =
+      [&dh_u](const std::function<bool(unsigned int)> &filter,
+              const std::function<void(
+                unsigned int, const std::vector<types::global_dof_index> &)>
+                &worker) {
+        std::vector<types::global_dof_index> du(
+          dh_u.get_fe().n_dofs_per_cell());
+        for (const auto &cell : dh_u.active_cell_iterators())
+          if (!cell->is_artificial() && filter(cell->active_cell_index()))
+            {
+              cell->get_dof_indices(du);
+              worker(cell->active_cell_index(), du);
+            }
       };
   }
 

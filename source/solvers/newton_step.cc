@@ -427,83 +427,71 @@ namespace hrcontact
     const unsigned int n_cells = system.n_cells();
     recovery_cells.clear();
     recovery.clear();
-    // One pass over the cells this process owns and those whose stresses
-    // every step needs, from the stored blocks or recomputed (a lean
-    // system): K_c = B_c F_c^{-1} B_c^T of the owned cells, kept for the
-    // Trilinos back end and added to K for the serial one, and F_c^{-1} B_c^T
-    // of the stored cells.
-    std::vector<unsigned int>            owned_cells;
-    std::vector<types::global_dof_index> owned_dofs;
-    std::vector<double>                  owned_stiffness;
-    unsigned int                         n_owned = 0, n_stored = 0;
+    unsigned int n_owned = 0, n_stored = 0;
     for (unsigned int c = 0; c < n_cells; ++c)
       {
         n_owned += partition.owned_cell[c];
         n_stored += system.is_stored(c);
       }
     recovery_complete = (n_stored == n_cells);
-    owned_cells.reserve(n_owned);
     recovery_cells.reserve(n_stored);
     recovery.reserve(n_stored);
+    auto owned_cell = [&](const unsigned int c) {
+      return bool(partition.owned_cell[c]);
+    };
+    // One pass over the cells this process owns and those whose stresses
+    // every step needs, from the stored blocks or recomputed (a lean
+    // system): K_c = B_c F_c^{-1} B_c^T of the owned cells to `add_owned`,
+    // and F_c^{-1} B_c^T of the stored cells kept.
     FullMatrix<double> Finv, R, Kc;
-    auto               add_owned = [&](const unsigned int                          cell,
-                         const std::vector<types::global_dof_index> &du,
-                         const FullMatrix<double>                   &Kc) {
-      if (owned_cells.empty()) // every cell has as many dofs
-        {
-          owned_dofs.reserve(std::size_t(n_owned) * du.size());
-          owned_stiffness.reserve(std::size_t(n_owned) * du.size() * du.size());
-        }
-      owned_cells.push_back(cell);
-      owned_dofs.insert(owned_dofs.end(), du.begin(), du.end());
-      for (unsigned int i = 0; i < du.size(); ++i)
-        for (unsigned int j = 0; j < du.size(); ++j)
-          owned_stiffness.push_back(Kc(i, j));
-    };
-    if (stiffness)
-      {
-        // Another bilinear form: no stresses to recover.
-        recovery_complete = false;
-        stiffness->for_each_cell(
-          [&](const unsigned int c) { return partition.owned_cell[c]; },
-          add_owned);
-      }
-    else
-      system.for_each_cell_blocks(
-        [&](const unsigned int c) {
-          return partition.owned_cell[c] || system.is_stored(c);
-        },
-        [&](const CellBlocks &b) {
-          const auto &du = b.displacement_dofs;
-          stress_recovery(b, Finv, R);
-          if (partition.owned_cell[b.cell])
-            {
-              Kc.reinit(du.size(), du.size());
-              b.B.mmult(Kc, R);
-              add_owned(b.cell, du, Kc);
-            }
-          if (system.is_stored(b.cell))
-            {
-              recovery_cells.push_back(b.cell);
-              recovery.push_back(R);
-            }
-        });
-    const unsigned int n_per_cell =
-      owned_cells.empty() ? 0 : owned_dofs.size() / owned_cells.size();
-    auto cell_dofs = [&](const unsigned int k) {
-      return ArrayView<const types::global_dof_index>(
-        owned_dofs.data() + std::size_t(k) * n_per_cell, n_per_cell);
-    };
+    auto               each_cell =
+      [&](const std::function<void(const unsigned int,
+                                   const std::vector<types::global_dof_index> &,
+                                   const FullMatrix<double> &)> &add_owned) {
+        if (stiffness)
+          {
+            // Another bilinear form: no stresses to recover.
+            recovery_complete = false;
+            stiffness->for_each_cell(owned_cell, add_owned);
+            return;
+          }
+        system.for_each_cell_blocks(
+          [&](const unsigned int c) {
+            return owned_cell(c) || system.is_stored(c);
+          },
+          [&](const CellBlocks &b) {
+            const auto &du = b.displacement_dofs;
+            stress_recovery(b, Finv, R);
+            if (owned_cell(b.cell))
+              {
+                Kc.reinit(du.size(), du.size());
+                b.B.mmult(Kc, R);
+                add_owned(b.cell, du, Kc);
+              }
+            if (system.is_stored(b.cell))
+              {
+                recovery_cells.push_back(b.cell);
+                recovery.push_back(R);
+              }
+          });
+      };
 
     if (distributed)
       {
         // The step-40 idiom: the couplings of the owned cells, sent to the
-        // owners of their rows.
+        // owners of their rows. The pattern comes from the cells' dofs
+        // alone, so that no K_c is buffered: each goes straight into the
+        // fixed part of K or, at a Q or H row, into the kept cells (on a
+        // 3D mesh the buffer of every owned K_c was 4.6 KB a cell).
         DynamicSparsityPattern dsp(partition.relevant);
-        for (unsigned int k = 0; k < owned_cells.size(); ++k)
-          for (const auto i : cell_dofs(k))
-            for (const auto j : cell_dofs(k))
-              dsp.add(i, j);
+        system.for_each_cell_dofs(
+          owned_cell,
+          [&](const unsigned int,
+              const std::vector<types::global_dof_index> &du) {
+            for (const auto i : du)
+              for (const auto j : du)
+                dsp.add(i, j);
+          });
         SparsityTools::distribute_sparsity_pattern(dsp,
                                                    partition.owned,
                                                    partition.communicator,
@@ -512,6 +500,7 @@ namespace hrcontact
                                    partition.owned,
                                    dsp,
                                    partition.communicator);
+        dsp.reinit(0, 0);
         distributed->rhs.reinit(partition.owned, partition.communicator);
         distributed->u.reinit(partition.owned, partition.communicator);
         // The cells at Q and H rows are kept; every other cell goes into the
@@ -523,55 +512,74 @@ namespace hrcontact
               at_row[dof] = true;
         auto &fixed = distributed->fixed;
         fixed.reinit(distributed->matrix);
-        std::vector<types::global_dof_index> kept_dofs, dofs(n_per_cell);
+        std::vector<types::global_dof_index> kept_dofs;
         std::vector<double>                  kept_stiffness;
-        FullMatrix<double>                   Kk(n_per_cell, n_per_cell);
-        for (unsigned int k = 0; k < owned_cells.size(); ++k)
-          {
-            const auto    view = cell_dofs(k);
-            const double *values =
-              owned_stiffness.data() + std::size_t(k) * n_per_cell * n_per_cell;
-            if (std::any_of(view.begin(), view.end(), [&](const auto i) {
-                  return at_row[i];
-                }))
-              {
-                kept_dofs.insert(kept_dofs.end(), view.begin(), view.end());
-                kept_stiffness.insert(kept_stiffness.end(),
-                                      values,
-                                      values + n_per_cell * n_per_cell);
-                continue;
-              }
-            std::copy(view.begin(), view.end(), dofs.begin());
-            for (unsigned int i = 0; i < n_per_cell; ++i)
-              for (unsigned int j = 0; j < n_per_cell; ++j)
-                Kk(i, j) = values[i * n_per_cell + j];
-            fixed.add(dofs, Kk);
-          }
+        unsigned int                         n_per_cell = 0;
+        each_cell([&](const unsigned int,
+                      const std::vector<types::global_dof_index> &du,
+                      const FullMatrix<double>                   &K_cell) {
+          n_per_cell = du.size(); // every cell has as many dofs
+          if (std::any_of(du.begin(), du.end(), [&](const auto i) {
+                return at_row[i];
+              }))
+            {
+              kept_dofs.insert(kept_dofs.end(), du.begin(), du.end());
+              for (unsigned int i = 0; i < du.size(); ++i)
+                for (unsigned int j = 0; j < du.size(); ++j)
+                  kept_stiffness.push_back(K_cell(i, j));
+              return;
+            }
+          fixed.add(du, K_cell);
+        });
         fixed.compress(VectorOperation::add);
         distributed->dofs_per_cell  = n_per_cell;
         distributed->cell_dofs      = std::move(kept_dofs);
         distributed->cell_stiffness = std::move(kept_stiffness);
+        return;
       }
-    else
-      {
+
+    // The serial direct back end (at most Direct limit dofs): K_c buffered,
+    // then the pattern and K.
+    std::vector<types::global_dof_index> owned_dofs;
+    std::vector<double>                  owned_stiffness;
+    unsigned int                         n_per_cell = 0;
+    each_cell([&](const unsigned int,
+                  const std::vector<types::global_dof_index> &du,
+                  const FullMatrix<double>                   &K_cell) {
+      if (owned_dofs.empty()) // every cell has as many dofs
         {
-          DynamicSparsityPattern dsp(n_u, n_u);
-          for (unsigned int k = 0; k < owned_cells.size(); ++k)
-            for (const auto i : cell_dofs(k))
-              for (const auto j : cell_dofs(k))
-                dsp.add(i, j);
-          sparsity.copy_from(dsp);
+          n_per_cell = du.size();
+          owned_dofs.reserve(std::size_t(n_owned) * du.size());
+          owned_stiffness.reserve(std::size_t(n_owned) * du.size() * du.size());
         }
-        K.reinit(sparsity);
-        for (unsigned int k = 0; k < owned_cells.size(); ++k)
-          {
-            const auto    dofs = cell_dofs(k);
-            const double *Kk =
-              owned_stiffness.data() + std::size_t(k) * n_per_cell * n_per_cell;
-            for (unsigned int i = 0; i < n_per_cell; ++i)
-              for (unsigned int j = 0; j < n_per_cell; ++j)
-                K.add(dofs[i], dofs[j], Kk[i * n_per_cell + j]);
-          }
+      owned_dofs.insert(owned_dofs.end(), du.begin(), du.end());
+      for (unsigned int i = 0; i < du.size(); ++i)
+        for (unsigned int j = 0; j < du.size(); ++j)
+          owned_stiffness.push_back(K_cell(i, j));
+    });
+    const std::size_t n_owned_cells =
+      (n_per_cell == 0) ? 0 : owned_dofs.size() / n_per_cell;
+    auto cell_dofs = [&](const std::size_t k) {
+      return ArrayView<const types::global_dof_index>(owned_dofs.data() +
+                                                        k * n_per_cell,
+                                                      n_per_cell);
+    };
+    {
+      DynamicSparsityPattern dsp(n_u, n_u);
+      for (std::size_t k = 0; k < n_owned_cells; ++k)
+        for (const auto i : cell_dofs(k))
+          for (const auto j : cell_dofs(k))
+            dsp.add(i, j);
+      sparsity.copy_from(dsp);
+    }
+    K.reinit(sparsity);
+    for (std::size_t k = 0; k < n_owned_cells; ++k)
+      {
+        const auto    dofs = cell_dofs(k);
+        const double *Kk = owned_stiffness.data() + k * n_per_cell * n_per_cell;
+        for (unsigned int i = 0; i < n_per_cell; ++i)
+          for (unsigned int j = 0; j < n_per_cell; ++j)
+            K.add(dofs[i], dofs[j], Kk[i * n_per_cell + j]);
       }
   }
 

@@ -123,6 +123,16 @@ namespace hrcontact
                        const std::function<void(const CellBlocks &)> &)>
       recompute_cell_blocks;
 
+    /** Calls the worker with the displacement dofs of every cell the filter
+     * accepts (a lean system's cells that are not stored), without
+     * computing its blocks. */
+    std::function<
+      void(const std::function<bool(unsigned int)> &,
+           const std::function<
+             void(unsigned int,
+                  const std::vector<dealii::types::global_dof_index> &)> &)>
+      recompute_cell_dofs;
+
     /** Number of active cells. */
     unsigned int
     n_cells() const
@@ -142,6 +152,18 @@ namespace hrcontact
     for_each_cell_blocks(
       const std::function<bool(unsigned int)>       &filter,
       const std::function<void(const CellBlocks &)> &worker) const;
+
+    /**
+     * The displacement dofs of every cell the filter accepts, from storage or
+     * from the mesh, in cell order: the sparsity pattern of the condensed
+     * stiffness, without buffering a K_c per cell.
+     */
+    void
+    for_each_cell_dofs(
+      const std::function<bool(unsigned int)>                  &filter,
+      const std::function<void(
+        unsigned int,
+        const std::vector<dealii::types::global_dof_index> &)> &worker) const;
 
     std::vector<EquilibriumRow>        rows;
     std::vector<unsigned int>          free_rows, contact_rows, prescribed_rows;
