@@ -72,9 +72,13 @@ namespace hrcontact
         Utilities::MPI::job_supports_mpi() ?
           Utilities::MPI::n_mpi_processes(mpi_communicator) :
           1;
-      distributed_mesh = n_processes > 1 && reduction.path != "null-space" &&
-                         scene.distortion == 0 &&
-                         !postprocessors.needs_replicated_mesh(scene);
+      replicated_mesh_reason =
+        reduction.path == "null-space" ? "the null-space path" :
+        scene.distortion != 0          ? "Geometry/Distortion" :
+        postprocessors.needs_replicated_mesh(scene) ?
+                                "a postprocessor walks across it" :
+                                "";
+      distributed_mesh = n_processes > 1 && replicated_mesh_reason.empty();
       if (distributed_mesh)
         triangulation =
           std::make_unique<parallel::distributed::Triangulation<dim>>(
@@ -98,7 +102,9 @@ namespace hrcontact
         << std::endl;
     if (partition.distributed())
       log << "  parallel: " << partition.describe()
-          << (distributed_mesh ? ", distributed mesh" : ", replicated mesh")
+          << (distributed_mesh ?
+                ", distributed mesh" :
+                ", replicated mesh (" + replicated_mesh_reason + ")")
           << std::endl;
     {
       TimerOutput::Scope t(timer, "assembly");

@@ -127,8 +127,10 @@ namespace hrcontact
      * the spaces, whose DoFHandlers refer to it.
      */
     std::unique_ptr<dealii::Triangulation<dim>> triangulation;
-    /** Whether `triangulation` is the distributed one. */
+    /** Whether `triangulation` is the distributed one, and what keeps it
+     * serial on several processes. */
     bool                      distributed_mesh = false;
+    std::string               replicated_mesh_reason;
     Scene<dim>                scene;
     MixedSpaces<dim>          spaces;
     EquilibriumReduction      reduction;
