@@ -15,6 +15,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe="$root/build/hrcontact"
+. "$root/scripts/scene-prm.sh"
 runs=${RUNS:-"hertz:5:1 hertz:7:1"}
 repeat=${REPEAT:-1}
 export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1}
@@ -30,14 +31,8 @@ printf "|---|---:|---:|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:
 for run in $runs; do
   IFS=: read -r scene r np <<< "$run"
   out="$work/$scene-$r-$np"
-  {
-    echo "include $root/parameters/$scene.prm"
-    echo "subsection Geometry"; echo "  set Global refinements = $r"; echo "end"
-    echo "subsection Output"; echo "  set Output directory = $out"; echo "  set Write solution = false"
-    echo "  set Print timing = false"; echo "  set Time the Q1 floor = true"
-    echo "  set Time a linear elastic solve = true"; echo "end"
-    echo "${EXTRA_PRM:-}"
-  } > "$out.prm"
+  write_scene_prm "$out.prm" "$scene" "$r" "$out" "set Print timing = false" \
+    "set Time the Q1 floor = true" "set Time a linear elastic solve = true"
   : > "$out.times"
   for k in $(seq "$repeat"); do
     mpirun -np "$np" "$exe" "$out.prm" > "$out.log" 2>&1 || { echo "run $run failed: $(tail -1 "$out.log")" >&2; continue 2; }

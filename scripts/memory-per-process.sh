@@ -14,6 +14,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 exe=${EXE:-"$root/build/hrcontact"}
+. "$root/scripts/scene-prm.sh"
 runs=${RUNS:-"hertz:8:1 hertz:8:2 hertz:8:4"}
 export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1}
 export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:-1}
@@ -29,13 +30,8 @@ printf "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n"
 for run in $runs; do
   IFS=: read -r scene r np <<< "$run"
   out="$work/$scene-$r-$np"
-  {
-    echo "include $root/parameters/$scene.prm"
-    echo "subsection Geometry"; echo "  set Global refinements = $r"; echo "end"
-    echo "subsection Output"; echo "  set Output directory = $out"; echo "  set Write solution = false"
-    echo "  set Print timing = true"; echo "  set Time the Q1 floor = true"; echo "end"
-    echo "${EXTRA_PRM:-}"
-  } > "$out.prm"
+  write_scene_prm "$out.prm" "$scene" "$r" "$out" "set Print timing = true" \
+    "set Time the Q1 floor = true"
   mpirun -np "$np" "$exe" "$out.prm" > "$out.log" 2>&1 || { echo "run $run failed: $(tail -1 "$out.log")" >&2; continue; }
   printf "| %s | %s | %s | %s | %s | %s | %.0f | %.1f | %.1f |\n" \
     "$scene" "$r" "$np" "$(get displacement_dofs "$out")" \

@@ -15,6 +15,7 @@ main()
                                  "malformed-expression",
                                  "wrong-component-count",
                                  "floating-body",
+                                 "floating-body-condensed",
                                  "poor-stress-space",
                                  "impossible-geometry",
                                  "conflicting-supports",

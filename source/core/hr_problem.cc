@@ -87,6 +87,21 @@ namespace hrcontact
         triangulation = std::make_unique<Triangulation<dim>>();
       scene.create_mesh(*triangulation);
       spaces.setup(*triangulation);
+      // Path = automatic takes the dense null-space path where it fits
+      // (choose_path): a mesh that small stays serial, as it needs every
+      // cell on every process (the mesh is cheap to build again).
+      if (distributed_mesh && reduction.path == "automatic" &&
+          dense_reduction_bytes(spaces.dof_handler_displacement.n_dofs()) <=
+            reduction.automatic_dense_limit)
+        {
+          distributed_mesh       = false;
+          replicated_mesh_reason = "small enough for the null-space path";
+          // The DoFHandlers move to the new mesh before the old one goes.
+          auto serial = std::make_unique<Triangulation<dim>>();
+          scene.create_mesh(*serial);
+          spaces.setup(*serial);
+          triangulation = std::move(serial);
+        }
       partition = partition_with_p4est(*triangulation,
                                        spaces.dof_handler_displacement,
                                        mpi_communicator);
@@ -416,6 +431,17 @@ namespace hrcontact
     r.contact_w.assign(nq, 0.);
     if (!r.has_contact)
       {
+        // Without contact every rigid motion must be held by a support: a
+        // sparse direct solver may return a vector for the singular system
+        // without a word (the null-space reduction stops earlier on its
+        // rank deficiency).
+        const unsigned int free = rigid_motions_held_only_by_contact(system);
+        if (free > 0)
+          throw InputError(
+            "Supports: " + std::to_string(free) +
+            " rigid-body motion(s) of the body are held by no support (the "
+            "body floats). Prescribe displacements or normal constraints that "
+            "stop every translation and rotation.");
         TimerOutput::Scope  t(timer, "solve");
         std::vector<double> p;
         path.solve(std::vector<bool>(nq, false),

@@ -1,7 +1,10 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/grid/grid_tools.h>
+
+#include <deal.II/distributed/tria_base.h>
 
 #include <hrcontact/core/scene.h>
 #include <hrcontact/geometry/tunnel_lining_grid.h>
@@ -199,16 +202,30 @@ namespace hrcontact
 
     // Inverted or degenerate cells (e.g. a rectangle given with its corners
     // swapped) would give a flexibility of the wrong sign: refuse them here.
+    // A distributed mesh: each process checks its own cells, and every
+    // process stops if one found such a cell (not only that one, or the
+    // others would wait for it).
+    std::string error;
     for (const auto &cell : triangulation.active_cell_iterators())
-      if (!(cell->measure() > 0))
+      if (cell->is_locally_owned() && !(cell->measure() > 0))
         {
           std::ostringstream s;
           s << "Geometry: the cell with centre (" << cell->center()
             << ") has non-positive measure " << cell->measure()
             << ": the grid arguments describe an impossible (inverted or "
                "degenerate) geometry.";
-          throw InputError(s.str());
+          error = s.str();
+          break;
         }
+    if (const auto *parallel_mesh =
+          dynamic_cast<const parallel::TriangulationBase<dim> *>(
+            &triangulation))
+      for (const auto &e :
+           Utilities::MPI::all_gather(parallel_mesh->get_communicator(), error))
+        if (error.empty())
+          error = e;
+    if (!error.empty())
+      throw InputError(error);
   }
 
   template <int dim>

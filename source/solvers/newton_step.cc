@@ -933,6 +933,15 @@ namespace hrcontact
       {
         throw InputError(singular_stiffness_message);
       }
+    // MUMPS returns some vector for a singular matrix (a floating body, a
+    // mechanism) without a word: an inconsistent system shows in the
+    // residual, which UMFPACK and CG would have refused.
+    TrilinosWrappers::MPI::Vector residual(distributed->rhs);
+    distributed->matrix.vmult(residual, distributed->u);
+    residual -= distributed->rhs;
+    const double scale = distributed->rhs.l2_norm();
+    if (!(residual.l2_norm() <= 1e-8 * std::max(scale, 1e-300)))
+      throw InputError(singular_stiffness_message);
     statistics.solve_seconds += timer.wall_time();
   }
 
