@@ -47,9 +47,9 @@ namespace hrcontact
      * each process assembles and solves for its own cells, and the contact
      * rows (a surface) and the augmented Lagrangian are replicated; process
      * 0 writes the result files and each process its piece of
-     * solution.pvtu. The dense null-space path (the serial reference), a
-     * randomly distorted mesh and the tunnel lining's section forces keep a
-     * replicated serial mesh.
+     * solution.pvtu. The dense null-space path (the serial reference, which
+     * Path = automatic takes for small meshes), a randomly distorted mesh
+     * and the tunnel lining's section forces keep a replicated serial mesh.
      */
     explicit HRProblem(dealii::ParameterHandler &prm,
                        const MPI_Comm            communicator = MPI_COMM_WORLD);
