@@ -427,12 +427,9 @@ namespace hrcontact
     const unsigned int n_cells = system.n_cells();
     recovery_cells.clear();
     recovery.clear();
-    unsigned int n_owned = 0, n_stored = 0;
+    unsigned int n_stored = 0;
     for (unsigned int c = 0; c < n_cells; ++c)
-      {
-        n_owned += partition.owned_cell[c];
-        n_stored += system.is_stored(c);
-      }
+      n_stored += system.is_stored(c);
     recovery_complete = (n_stored == n_cells);
     recovery_cells.reserve(n_stored);
     recovery.reserve(n_stored);
@@ -538,49 +535,23 @@ namespace hrcontact
         return;
       }
 
-    // The serial direct back end (at most Direct limit dofs): K_c buffered,
-    // then the pattern and K.
-    std::vector<types::global_dof_index> owned_dofs;
-    std::vector<double>                  owned_stiffness;
-    unsigned int                         n_per_cell = 0;
-    each_cell([&](const unsigned int,
-                  const std::vector<types::global_dof_index> &du,
-                  const FullMatrix<double>                   &K_cell) {
-      if (owned_dofs.empty()) // every cell has as many dofs
-        {
-          n_per_cell = du.size();
-          owned_dofs.reserve(std::size_t(n_owned) * du.size());
-          owned_stiffness.reserve(std::size_t(n_owned) * du.size() * du.size());
-        }
-      owned_dofs.insert(owned_dofs.end(), du.begin(), du.end());
-      for (unsigned int i = 0; i < du.size(); ++i)
-        for (unsigned int j = 0; j < du.size(); ++j)
-          owned_stiffness.push_back(K_cell(i, j));
-    });
-    const std::size_t n_owned_cells =
-      (n_per_cell == 0) ? 0 : owned_dofs.size() / n_per_cell;
-    auto cell_dofs = [&](const std::size_t k) {
-      return ArrayView<const types::global_dof_index>(owned_dofs.data() +
-                                                        k * n_per_cell,
-                                                      n_per_cell);
-    };
+    // The serial direct back end: the same two passes into K.
     {
       DynamicSparsityPattern dsp(n_u, n_u);
-      for (std::size_t k = 0; k < n_owned_cells; ++k)
-        for (const auto i : cell_dofs(k))
-          for (const auto j : cell_dofs(k))
-            dsp.add(i, j);
+      system.for_each_cell_dofs(
+        owned_cell,
+        [&](const unsigned int,
+            const std::vector<types::global_dof_index> &du) {
+          for (const auto i : du)
+            for (const auto j : du)
+              dsp.add(i, j);
+        });
       sparsity.copy_from(dsp);
     }
     K.reinit(sparsity);
-    for (std::size_t k = 0; k < n_owned_cells; ++k)
-      {
-        const auto    dofs = cell_dofs(k);
-        const double *Kk = owned_stiffness.data() + k * n_per_cell * n_per_cell;
-        for (unsigned int i = 0; i < n_per_cell; ++i)
-          for (unsigned int j = 0; j < n_per_cell; ++j)
-            K.add(dofs[i], dofs[j], Kk[i * n_per_cell + j]);
-      }
+    each_cell([&](const unsigned int,
+                  const std::vector<types::global_dof_index> &du,
+                  const FullMatrix<double> &K_cell) { K.add(du, K_cell); });
   }
 
   void
