@@ -16,12 +16,6 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 exe=${EXE:-"$root/build/hrcontact"}
 . "$root/scripts/scene-prm.sh"
 runs=${RUNS:-"hertz:8:1 hertz:8:2 hertz:8:4"}
-export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1}
-export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:-1}
-export OMPI_MCA_rmaps_base_oversubscribe=1
-export OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 get() { sed -n "s/^$1 = //p" "$2/summary.txt"; }
 # The "peak so far" of a stage in the memory table the run prints.
 stage_peak() { grep "^  $1 " "$2" | sed -n 's/.*(peak so far \([0-9]*\)).*/\1/p' | tail -1; }

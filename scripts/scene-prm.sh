@@ -1,7 +1,15 @@
-# Sourced by the benchmark scripts (needs $root): write the .prm of one run,
-# a scene of parameters/ at a refinement, its results into a directory, with
-# the given Output entries and $EXTRA_PRM appended.
+# Sourced by the benchmark scripts (needs $root): Open MPI's settings for
+# root and oversubscription, one OpenMP thread for timing, a work directory
+# $work removed at exit, and write_scene_prm: the .prm of one run, a scene
+# of parameters/ at a refinement, its results into a directory, with the
+# given Output entries and $EXTRA_PRM appended.
 #   write_scene_prm FILE SCENE REFINEMENTS OUTPUT_DIR ["set Key = value" ...]
+export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1}
+export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:-1}
+export OMPI_MCA_rmaps_base_oversubscribe=1
+export OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
 write_scene_prm() {
   local file=$1 scene=$2 r=$3 out=$4
   shift 4
