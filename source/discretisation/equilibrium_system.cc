@@ -32,15 +32,26 @@ namespace hrcontact
         v[it->column()] += coefficient * c * it->value();
   }
 
+  namespace
+  {
+    /** Whether every cell the filter accepts is stored (else recompute). */
+    bool
+    every_cell_stored(const EquilibriumSystem                 &system,
+                      const std::function<bool(unsigned int)> &filter)
+    {
+      for (unsigned int c = 0; c < system.n_cells(); ++c)
+        if (filter(c) && !system.is_stored(c))
+          return false;
+      return true;
+    }
+  } // namespace
+
   void
   EquilibriumSystem::for_each_cell_blocks(
     const std::function<bool(unsigned int)>       &filter,
     const std::function<void(const CellBlocks &)> &worker) const
   {
-    bool all_stored = true;
-    for (unsigned int c = 0; c < n_cells() && all_stored; ++c)
-      all_stored = !filter(c) || is_stored(c);
-    if (!all_stored)
+    if (!every_cell_stored(*this, filter))
       {
         Assert(recompute_cell_blocks, ExcInternalError());
         recompute_cell_blocks(filter, worker);
@@ -72,10 +83,7 @@ namespace hrcontact
                              const std::vector<types::global_dof_index> &)>
       &worker) const
   {
-    bool all_stored = true;
-    for (unsigned int c = 0; c < n_cells() && all_stored; ++c)
-      all_stored = !filter(c) || is_stored(c);
-    if (!all_stored)
+    if (!every_cell_stored(*this, filter))
       {
         Assert(recompute_cell_dofs, ExcInternalError());
         recompute_cell_dofs(filter, worker);
