@@ -473,6 +473,19 @@ namespace hrcontact
           });
       };
 
+    // The couplings of the owned cells, from their dofs alone, so that no
+    // K_c is buffered for the pattern.
+    auto add_couplings = [&](DynamicSparsityPattern &dsp) {
+      system.for_each_cell_dofs(
+        owned_cell,
+        [&](const unsigned int,
+            const std::vector<types::global_dof_index> &du) {
+          for (const auto i : du)
+            for (const auto j : du)
+              dsp.add(i, j);
+        });
+    };
+
     if (distributed)
       {
         // The step-40 idiom: the couplings of the owned cells, sent to the
@@ -481,14 +494,7 @@ namespace hrcontact
         // fixed part of K or, at a Q or H row, into the kept cells (on a
         // 3D mesh the buffer of every owned K_c was 4.6 KB a cell).
         DynamicSparsityPattern dsp(partition.relevant);
-        system.for_each_cell_dofs(
-          owned_cell,
-          [&](const unsigned int,
-              const std::vector<types::global_dof_index> &du) {
-            for (const auto i : du)
-              for (const auto j : du)
-                dsp.add(i, j);
-          });
+        add_couplings(dsp);
         SparsityTools::distribute_sparsity_pattern(dsp,
                                                    partition.owned,
                                                    partition.communicator,
@@ -538,14 +544,7 @@ namespace hrcontact
     // The serial direct back end: the same two passes into K.
     {
       DynamicSparsityPattern dsp(n_u, n_u);
-      system.for_each_cell_dofs(
-        owned_cell,
-        [&](const unsigned int,
-            const std::vector<types::global_dof_index> &du) {
-          for (const auto i : du)
-            for (const auto j : du)
-              dsp.add(i, j);
-        });
+      add_couplings(dsp);
       sparsity.copy_from(dsp);
     }
     K.reinit(sparsity);
