@@ -538,6 +538,7 @@ namespace hrcontact
         distributed->dofs_per_cell  = n_per_cell;
         distributed->cell_dofs      = std::move(kept_dofs);
         distributed->cell_stiffness = std::move(kept_stiffness);
+        index_recovered_stresses();
         return;
       }
 
@@ -551,6 +552,63 @@ namespace hrcontact
     each_cell([&](const unsigned int,
                   const std::vector<types::global_dof_index> &du,
                   const FullMatrix<double> &K_cell) { K.add(du, K_cell); });
+    index_recovered_stresses();
+  }
+
+  void
+  CondensedStep::index_recovered_stresses()
+  {
+    recovered_offset.assign(1, 0);
+    for (const unsigned int c : recovery_cells)
+      recovered_offset.push_back(recovered_offset.back() +
+                                 system.cell_stress_dofs[c].size());
+    recovered_stress.assign(recovered_offset.back(), 0.);
+
+    // The stress dofs the owned Q rows read, and where each is recovered
+    // (a row's B entries belong to the cells around its node, all of them
+    // recovery cells: the stored cells).
+    const std::size_t none = numbers::invalid_size_type;
+    auto              owned_row = [&](const EquilibriumRow &row) {
+      return partition.owned.is_element(row.combination.front().first);
+    };
+    std::map<types::global_dof_index, std::size_t> position;
+    for (const unsigned int r : system.contact_rows)
+      if (owned_row(system.rows[r]))
+        for (const auto &[dof, c] : system.rows[r].combination)
+          for (auto it = system.B.begin(dof); it != system.B.end(dof); ++it)
+            position.emplace(it->column(), none);
+    for (unsigned int k = 0; k < recovery_cells.size(); ++k)
+      {
+        const auto &ds = system.cell_stress_dofs[recovery_cells[k]];
+        for (unsigned int j = 0; j < ds.size(); ++j)
+          {
+            const auto found = position.find(ds[j]);
+            if (found != position.end())
+              found->second = recovered_offset[k] + j;
+          }
+      }
+
+    contact_terms.clear();
+    contact_term_start.assign(1, 0);
+    for (const unsigned int r : system.contact_rows)
+      {
+        const EquilibriumRow &row = system.rows[r];
+        if (owned_row(row) && !stiffness)
+          for (unsigned int k = 0; k < row.combination.size(); ++k)
+            {
+              const auto dof = row.combination[k].first;
+              for (auto it = system.B.begin(dof); it != system.B.end(dof);
+                   ++it)
+                {
+                  const std::size_t at = position.at(it->column());
+                  AssertThrow(at != none,
+                              ExcInternalError("a Q row reads the stresses "
+                                               "of a cell not recovered"));
+                  contact_terms.push_back({k, at, it->value()});
+                }
+            }
+        contact_term_start.push_back(contact_terms.size());
+      }
   }
 
   void
@@ -861,18 +919,17 @@ namespace hrcontact
         statistics.solve_seconds += timer.wall_time();
       }
 
-    s.reinit(system.n_stress_dofs);
     for (unsigned int k = 0; k < recovery_cells.size(); ++k)
       {
-        const unsigned int c  = recovery_cells[k];
-        const auto        &du = system.cell_displacement_dofs[c];
-        const auto        &ds = system.cell_stress_dofs[c];
-        for (unsigned int i = 0; i < ds.size(); ++i)
+        const auto  &du = system.cell_displacement_dofs[recovery_cells[k]];
+        double      *s  = recovered_stress.data() + recovered_offset[k];
+        const auto   n  = recovered_offset[k + 1] - recovered_offset[k];
+        for (unsigned int i = 0; i < n; ++i)
           {
             double sum = 0;
             for (unsigned int j = 0; j < du.size(); ++j)
               sum += recovery[k](i, j) * u[du[j]];
-            s[ds[i]] = sum;
+            s[i] = sum;
           }
       }
     // p of each row by the owner of its node, the only process that has
@@ -882,7 +939,18 @@ namespace hrcontact
       {
         const EquilibriumRow &row = system.rows[system.contact_rows[i]];
         if (owned(row))
-          p[i] = system.row_times(row, s) - system.row_load(row);
+          {
+            double sum = 0;
+            for (std::size_t t = contact_term_start[i];
+                 t < contact_term_start[i + 1];
+                 ++t)
+              {
+                const StressTerm &term = contact_terms[t];
+                sum += row.combination[term.k].second * term.b *
+                       recovered_stress[term.position];
+              }
+            p[i] = sum - system.row_load(row);
+          }
       }
     if (partition.distributed())
       Utilities::MPI::sum(p, partition.communicator, p);
@@ -1032,23 +1100,29 @@ namespace hrcontact
   void
   CondensedStep::stresses(Vector<double> &stress) const
   {
-    if (recovery_complete)
-      {
-        stress = s;
-        return;
-      }
-    // A lean system: every process recovers its own cells, the stored ones
-    // from their kept F_c^{-1} B_c^T, the others from recomputed blocks, in
-    // the same operations; the stress dofs of a cell are its own, so the
-    // sum over the processes assembles s.
+    // Every process recovers its own cells, the stored ones from their kept
+    // F_c^{-1} B_c^T (already done by the last solve), the others (a lean
+    // system) from recomputed blocks, in the same operations; the stress
+    // dofs of a cell are its own, so the sum over the processes assembles s.
     stress.reinit(system.n_stress_dofs);
     for (unsigned int k = 0; k < recovery_cells.size(); ++k)
       if (partition.owned_cell[recovery_cells[k]])
         {
           const auto &ds = system.cell_stress_dofs[recovery_cells[k]];
-          for (const auto i : ds)
-            stress[i] = s[i];
+          for (unsigned int j = 0; j < ds.size(); ++j)
+            stress[ds[j]] = recovered_stress[recovered_offset[k] + j];
         }
+    if (recovery_complete)
+      {
+        if (partition.distributed())
+          {
+            const ArrayView<const double> values(stress.begin(),
+                                                 stress.size());
+            const ArrayView<double>       sums(stress.begin(), stress.size());
+            Utilities::MPI::sum(values, partition.communicator, sums);
+          }
+        return;
+      }
     FullMatrix<double> Finv, R;
     system.for_each_cell_blocks(
       [&](const unsigned int c) {
