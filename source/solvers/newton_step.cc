@@ -21,6 +21,7 @@
 #include <map>
 #include <sstream>
 
+#include <Epetra_CrsMatrix.h>
 #include <Epetra_MultiVector.h>
 
 namespace hrcontact
@@ -150,13 +151,17 @@ namespace hrcontact
     bool                                built                  = false;
     unsigned int                        iterations_after_setup = 0;
     /**
-     * K_c summed over the owned cells none of whose dofs belongs to the node
-     * of a Q or H row: the part of K that no Newton step changes (held rows,
-     * springs and their constraints touch only the cells at those nodes),
-     * assembled once and added to each step's matrix by one pass over the
-     * values instead of a pass over the cells.
+     * The part of K that no Newton step changes is K_c summed over the owned
+     * cells none of whose dofs belongs to the node of a Q or H row (held
+     * rows, springs and their constraints touch only the cells at those
+     * nodes). It is assembled once into `matrix`; a step changes only the
+     * rows of the kept cells' dofs, so it restores their fixed values (kept
+     * here, row after row, with Epetra's local row numbers) and adds the
+     * kept cells, instead of copying a second matrix of the fixed part: one
+     * matrix fewer per process, and the same values to the last bit.
      */
-    TrilinosWrappers::SparseMatrix fixed;
+    std::vector<int>    changing_rows;
+    std::vector<double> fixed_values;
     /** The displacement dofs and K_c of the other owned cells, those at Q
      * and H rows, one cell after the other (dofs_per_cell and its square
      * numbers each). */
@@ -513,8 +518,7 @@ namespace hrcontact
           for (const unsigned int r : *rows)
             for (const auto &[dof, c] : system.rows[r].combination)
               at_row[dof] = true;
-        auto &fixed = distributed->fixed;
-        fixed.reinit(distributed->matrix);
+        auto                                &fixed = distributed->matrix;
         std::vector<types::global_dof_index> kept_dofs;
         std::vector<double>                  kept_stiffness;
         unsigned int                         n_per_cell = 0;
@@ -535,6 +539,34 @@ namespace hrcontact
           fixed.add(du, K_cell);
         });
         fixed.compress(VectorOperation::add);
+
+        // The rows the kept cells add to, marked by the processes that own
+        // the cells and summed to the rows' owners, and their fixed values.
+        TrilinosWrappers::MPI::Vector changing;
+        changing.reinit(partition.owned,
+                        partition.relevant,
+                        partition.communicator,
+                        true);
+        changing.add(std::vector<types::global_dof_index>(kept_dofs.begin(),
+                                                          kept_dofs.end()),
+                     std::vector<double>(kept_dofs.size(), 1.));
+        changing.compress(VectorOperation::add);
+        const Epetra_CrsMatrix &E = fixed.trilinos_matrix();
+        distributed->changing_rows.clear();
+        distributed->fixed_values.clear();
+        for (const auto i : partition.owned)
+          if (changing[i] != 0)
+            {
+              const int row = E.RowMap().LID(
+                static_cast<TrilinosWrappers::types::int_type>(i));
+              int     n      = 0;
+              double *values = nullptr;
+              E.ExtractMyRowView(row, n, values);
+              distributed->changing_rows.push_back(row);
+              distributed->fixed_values.insert(distributed->fixed_values.end(),
+                                               values,
+                                               values + n);
+            }
         distributed->dofs_per_cell  = n_per_cell;
         distributed->cell_dofs      = std::move(kept_dofs);
         distributed->cell_stiffness = std::move(kept_stiffness);
@@ -567,7 +599,7 @@ namespace hrcontact
     // The stress dofs the owned Q rows read, and where each is recovered
     // (a row's B entries belong to the cells around its node, all of them
     // recovery cells: the stored cells).
-    const std::size_t none = numbers::invalid_size_type;
+    const std::size_t none      = numbers::invalid_size_type;
     auto              owned_row = [&](const EquilibriumRow &row) {
       return partition.owned.is_element(row.combination.front().first);
     };
@@ -597,8 +629,7 @@ namespace hrcontact
           for (unsigned int k = 0; k < row.combination.size(); ++k)
             {
               const auto dof = row.combination[k].first;
-              for (auto it = system.B.begin(dof); it != system.B.end(dof);
-                   ++it)
+              for (auto it = system.B.begin(dof); it != system.B.end(dof); ++it)
                 {
                   const std::size_t at = position.at(it->column());
                   AssertThrow(at != none,
@@ -773,15 +804,26 @@ namespace hrcontact
     ++statistics.solves;
     if (distributed)
       {
-        Timer timer;
-        auto &A   = distributed->matrix;
-        auto &rhs = distributed->rhs;
-        A         = 0;
-        rhs       = 0;
-        A.add(1., distributed->fixed);
+        Timer       timer;
+        auto       &A   = distributed->matrix;
+        auto       &rhs = distributed->rhs;
+        const auto &d   = *distributed;
+        rhs             = 0;
+        // The rows the last step changed go back to the fixed part of K.
+        {
+          const Epetra_CrsMatrix &E     = A.trilinos_matrix();
+          const double           *fixed = d.fixed_values.data();
+          for (const int row : d.changing_rows)
+            {
+              int     n      = 0;
+              double *values = nullptr;
+              E.ExtractMyRowView(row, n, values);
+              std::copy(fixed, fixed + n, values);
+              fixed += n;
+            }
+        }
         // Loads enter per dof below; the cells at Q and H rows bring
         // stiffness only.
-        const auto        &d          = *distributed;
         const unsigned int n_per_cell = d.dofs_per_cell;
         const std::size_t  n_owned_cells =
           (n_per_cell == 0) ? 0 : d.cell_dofs.size() / n_per_cell;
@@ -921,9 +963,9 @@ namespace hrcontact
 
     for (unsigned int k = 0; k < recovery_cells.size(); ++k)
       {
-        const auto  &du = system.cell_displacement_dofs[recovery_cells[k]];
-        double      *s  = recovered_stress.data() + recovered_offset[k];
-        const auto   n  = recovered_offset[k + 1] - recovered_offset[k];
+        const auto &du = system.cell_displacement_dofs[recovery_cells[k]];
+        double     *s  = recovered_stress.data() + recovered_offset[k];
+        const auto  n  = recovered_offset[k + 1] - recovered_offset[k];
         for (unsigned int i = 0; i < n; ++i)
           {
             double sum = 0;
@@ -1116,8 +1158,7 @@ namespace hrcontact
       {
         if (partition.distributed())
           {
-            const ArrayView<const double> values(stress.begin(),
-                                                 stress.size());
+            const ArrayView<const double> values(stress.begin(), stress.size());
             const ArrayView<double>       sums(stress.begin(), stress.size());
             Utilities::MPI::sum(values, partition.communicator, sums);
           }
