@@ -143,9 +143,15 @@ namespace hrcontact
   {
     TrilinosWrappers::SparseMatrix matrix;
     TrilinosWrappers::MPI::Vector  rhs, u;
-    /** With Reuse preconditioner: the matrix the kept AMG hierarchy was
-     * built from (ML keeps a pointer). */
-    TrilinosWrappers::SparseMatrix      setup_matrix;
+    /**
+     * With Reuse preconditioner: the values of changing_rows when the kept
+     * AMG hierarchy was built. ML keeps a pointer to `matrix` and applies
+     * its finest level with the values there, so they are swapped in for
+     * each application of the preconditioner and out again for CG's own
+     * products (AtSetupValues): a surface of rows, where a copy of the
+     * whole matrix was kept before, with the same arithmetic.
+     */
+    std::vector<double>                 setup_values;
     TrilinosWrappers::PreconditionAMG   preconditioner;
     std::unique_ptr<Epetra_MultiVector> modes;
     bool                                built                  = false;
@@ -162,6 +168,56 @@ namespace hrcontact
      */
     std::vector<int>    changing_rows;
     std::vector<double> fixed_values;
+
+    /** The values of changing_rows, row after row. */
+    std::vector<double>
+    row_values() const
+    {
+      std::vector<double>     values;
+      const Epetra_CrsMatrix &E = matrix.trilinos_matrix();
+      for (const int row : changing_rows)
+        {
+          int     n = 0;
+          double *v = nullptr;
+          E.ExtractMyRowView(row, n, v);
+          values.insert(values.end(), v, v + n);
+        }
+      return values;
+    }
+
+    /** Exchange the values of changing_rows with those in @p values. */
+    void
+    swap_row_values(std::vector<double> &values) const
+    {
+      const Epetra_CrsMatrix &E = matrix.trilinos_matrix();
+      double                 *w = values.data();
+      for (const int row : changing_rows)
+        {
+          int     n = 0;
+          double *v = nullptr;
+          E.ExtractMyRowView(row, n, v);
+          std::swap_ranges(v, v + n, w);
+          w += n;
+        }
+    }
+
+    /**
+     * The kept AMG hierarchy, applied with the matrix values it was built
+     * from: swapped into the changing rows for the application and back
+     * out for CG's own product with the current matrix.
+     */
+    struct AtSetupValues
+    {
+      Distributed &d;
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        d.swap_row_values(d.setup_values);
+        d.preconditioner.vmult(dst, src);
+        d.swap_row_values(d.setup_values);
+      }
+    };
     /** The displacement dofs and K_c of the other owned cells, those at Q
      * and H rows, one cell after the other (dofs_per_cell and its square
      * numbers each). */
@@ -1036,11 +1092,10 @@ namespace hrcontact
       Timer setup_timer;
       d.preconditioner.clear();
       // ML keeps a pointer to the matrix: a hierarchy that outlives the
-      // step needs a copy; one rebuilt every step does not.
+      // step keeps the values of the rows the steps change.
       if (reuse)
-        d.setup_matrix.copy_from(d.matrix);
-      const TrilinosWrappers::SparseMatrix &M =
-        reuse ? d.setup_matrix : d.matrix;
+        d.setup_values = d.row_values();
+      const TrilinosWrappers::SparseMatrix &M = d.matrix;
       // Smoothed aggregation for an elliptic operator; the near null space
       // is the rigid-body modes (ML's pre-computed null space), since the
       // translations alone (deal.II 9.4's constant modes) coarsen bending
@@ -1098,7 +1153,10 @@ namespace hrcontact
       SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
       try
         {
-          cg.solve(d.matrix, d.u, rhs, d.preconditioner);
+          if (reuse)
+            cg.solve(d.matrix, d.u, rhs, Distributed::AtSetupValues{d});
+          else
+            cg.solve(d.matrix, d.u, rhs, d.preconditioner);
         }
       catch (const SolverControl::NoConvergence &)
         {
