@@ -96,7 +96,18 @@ namespace hrcontact
     Fc.reinit(n_s, n_s);
     fc.reinit(n_u);
     Vector<double> force(dim), pressure(dim);
-    auto           cs = dh_s.begin_active();
+    auto add_body_force = [&](const unsigned int q, const double JxW) {
+      if (!scene.body_force)
+        return;
+      scene.body_force->vector_value(fv_u.quadrature_point(q), force);
+      for (unsigned int i = 0; i < n_u; ++i)
+        fc(i) += fv_u.shape_value(i, q) * force(comp_u[i]) * JxW;
+    };
+    // Only after a first cell, and only where F_c does not depend on the
+    // position or the stresses.
+    bool       reuse_blocks = false;
+    const bool may_reuse    = !stress_state && material.is_homogeneous();
+    auto       cs           = dh_s.begin_active();
     for (const auto &cu : dh_u.active_cell_iterators())
       {
         blocks.cell = cu->active_cell_index();
@@ -111,8 +122,21 @@ namespace hrcontact
         cu->get_dof_indices(du);
         cs->get_dof_indices(ds);
 
-        Fc = 0;
-        Bc = 0;
+        // A translation of the previous cell (deal.II's CellSimilarity:
+        // FEValues then copies its Jacobians, so JxW and the gradients are
+        // the same numbers) of a homogeneous, stress-independent material:
+        // F_c and B_c are the previous cell's to the last bit; only the
+        // load, which depends on the position, is integrated again. On the
+        // uniform 3D block nearly every cell is one (doc/benchmarks.md).
+        const bool same = reuse_blocks && fv_u.get_cell_similarity() ==
+                                            CellSimilarity::translation;
+        blocks.same_as_previous = same;
+        reuse_blocks            = may_reuse;
+        if (!same)
+          {
+            Fc = 0;
+            Bc = 0;
+          }
         fc = 0;
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           {
@@ -124,6 +148,11 @@ namespace hrcontact
                   << ") is inverted or too distorted (non-positive Jacobian "
                      "at a quadrature point).";
                 throw InputError(s.str());
+              }
+            if (same)
+              {
+                add_body_force(q, JxW);
+                continue;
               }
             if (stress_state)
               {
@@ -171,16 +200,7 @@ namespace hrcontact
                       Bc(i, j) += eps_T * psi[j] * JxW;
                   }
               }
-            if (scene.body_force)
-              {
-                scene.body_force->vector_value(fv_u.quadrature_point(q), force);
-                for (unsigned int i = 0; i < n_u; ++i)
-                  {
-                    const unsigned int a =
-                      fe_u.system_to_component_index(i).first;
-                    fc(i) += fv_u.shape_value(i, q) * force(a) * JxW;
-                  }
-              }
+            add_body_force(q, JxW);
           }
 
         for (const auto f : cu->face_indices())

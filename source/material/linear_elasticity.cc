@@ -98,6 +98,13 @@ namespace hrcontact
 
   template <int dim>
   bool
+  LinearElasticity<dim>::is_homogeneous() const
+  {
+    return true;
+  }
+
+  template <int dim>
+  bool
   LinearElasticity<dim>::is_linear() const
   {
     return true;

@@ -502,6 +502,7 @@ namespace hrcontact
     // system): K_c = B_c F_c^{-1} B_c^T of the owned cells to `add_owned`,
     // and F_c^{-1} B_c^T of the stored cells kept.
     FullMatrix<double> Finv, R, Kc;
+    bool               have_R = false, have_Kc = false;
     auto               each_cell =
       [&](const std::function<void(const unsigned int,
                                    const std::vector<types::global_dof_index> &,
@@ -519,11 +520,21 @@ namespace hrcontact
           },
           [&](const CellBlocks &b) {
             const auto &du = b.displacement_dofs;
-            stress_recovery(b, Finv, R);
+            // The same B_c and F_c as the previous cell: the same R and K_c.
+            if (!(b.same_as_previous && have_R))
+              {
+                stress_recovery(b, Finv, R);
+                have_R  = true;
+                have_Kc = false;
+              }
             if (owned_cell(b.cell))
               {
-                Kc.reinit(du.size(), du.size());
-                b.B.mmult(Kc, R);
+                if (!have_Kc)
+                  {
+                    Kc.reinit(du.size(), du.size());
+                    b.B.mmult(Kc, R);
+                    have_Kc = true;
+                  }
                 add_owned(b.cell, du, Kc);
               }
             if (system.is_stored(b.cell))
@@ -1223,6 +1234,7 @@ namespace hrcontact
         return;
       }
     FullMatrix<double> Finv, R;
+    bool               have_R = false;
     system.for_each_cell_blocks(
       [&](const unsigned int c) {
         return partition.owned_cell[c] && !system.is_stored(c);
@@ -1230,7 +1242,9 @@ namespace hrcontact
       [&](const CellBlocks &b) {
         const auto &du = b.displacement_dofs;
         const auto &ds = b.stress_dofs;
-        stress_recovery(b, Finv, R);
+        if (!(b.same_as_previous && have_R))
+          stress_recovery(b, Finv, R);
+        have_R = true;
         for (unsigned int i = 0; i < ds.size(); ++i)
           {
             double sum = 0;

@@ -82,6 +82,13 @@ namespace hrcontact
     /** The cell's share of the load vector f (empty when the blocks come
      * from storage). */
     dealii::Vector<double> load;
+    /**
+     * Whether B and F are those of the cell handed to the worker just
+     * before (this cell is a translation of it and the material is
+     * homogeneous), to the last bit: a worker may keep what it derived from
+     * them, such as F_c^{-1} B_c^T and K_c.
+     */
+    bool same_as_previous = false;
   };
 
   /**

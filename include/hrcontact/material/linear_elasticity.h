@@ -30,6 +30,9 @@ namespace hrcontact
                      const dealii::Point<dim>              &x) const override;
     bool
     is_linear() const override;
+    /** E and nu are constants. */
+    bool
+    is_homogeneous() const override;
     /** (1 - nu^2)/E in plane strain, 1/E in plane stress, 1/(E h) in 3D
      * with h the mean cell size (volume / cells)^(1/3). */
     double

@@ -57,6 +57,18 @@ namespace hrcontact
     is_linear() const = 0;
 
     /**
+     * Whether the compliance is the same at every point: the assembler then
+     * takes F_c and B_c of a cell that is a translation of the previous one
+     * from that cell (HRAssembler::for_each_cell). False unless a law says
+     * so.
+     */
+    virtual bool
+    is_homogeneous() const
+    {
+      return false;
+    }
+
+    /**
      * The nodal compliance c_h of the mesh and material that scales the
      * augmented Lagrangian's initial penalty: the displacement of a
      * boundary node per unit nodal force, up to a factor of order one.
