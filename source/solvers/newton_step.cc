@@ -476,9 +476,14 @@ namespace hrcontact
   CondensedStep::flexibility_changed()
   {
     direct_factor.reset();
-    assemble();
+    // ML keeps a pointer to the matrix that assemble() replaces: drop the
+    // hierarchy first; the next solve builds one for the new K.
     if (distributed)
-      distributed->built = false; // a new AMG hierarchy for the new K
+      {
+        distributed->preconditioner.clear();
+        distributed->built = false;
+      }
+    assemble();
   }
 
   void
