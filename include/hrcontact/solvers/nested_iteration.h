@@ -91,7 +91,7 @@ namespace hrcontact
     /** -1: automatic. */
     int    coarse_levels       = -1;
     double minimum_dofs        = 2e4;
-    double coarsest_level_dofs = 2e3;
+    double coarsest_level_dofs = 1e3;
   };
 } // namespace hrcontact
 
