@@ -169,36 +169,52 @@ namespace hrcontact
     std::vector<int>    changing_rows;
     std::vector<double> fixed_values;
 
-    /** The values of changing_rows, row after row. */
-    std::vector<double>
-    row_values() const
+    /** f(values, n) on the stored values of each of changing_rows. */
+    template <typename F>
+    void
+    for_each_changing_row(const F &f) const
     {
-      std::vector<double>     values;
       const Epetra_CrsMatrix &E = matrix.trilinos_matrix();
       for (const int row : changing_rows)
         {
           int     n = 0;
           double *v = nullptr;
           E.ExtractMyRowView(row, n, v);
-          values.insert(values.end(), v, v + n);
+          f(v, n);
         }
+    }
+
+    /** The values of changing_rows, row after row. */
+    std::vector<double>
+    row_values() const
+    {
+      std::vector<double> values;
+      for_each_changing_row([&](const double *v, const int n) {
+        values.insert(values.end(), v, v + n);
+      });
       return values;
+    }
+
+    /** Write @p values (row_values' layout) into changing_rows. */
+    void
+    set_row_values(const std::vector<double> &values) const
+    {
+      const double *w = values.data();
+      for_each_changing_row([&](double *v, const int n) {
+        std::copy(w, w + n, v);
+        w += n;
+      });
     }
 
     /** Exchange the values of changing_rows with those in @p values. */
     void
     swap_row_values(std::vector<double> &values) const
     {
-      const Epetra_CrsMatrix &E = matrix.trilinos_matrix();
-      double                 *w = values.data();
-      for (const int row : changing_rows)
-        {
-          int     n = 0;
-          double *v = nullptr;
-          E.ExtractMyRowView(row, n, v);
-          std::swap_ranges(v, v + n, w);
-          w += n;
-        }
+      double *w = values.data();
+      for_each_changing_row([&](double *v, const int n) {
+        std::swap_ranges(v, v + n, w);
+        w += n;
+      });
     }
 
     /**
@@ -623,22 +639,13 @@ namespace hrcontact
                                                           kept_dofs.end()),
                      std::vector<double>(kept_dofs.size(), 1.));
         changing.compress(VectorOperation::add);
-        const Epetra_CrsMatrix &E = fixed.trilinos_matrix();
+        const Epetra_Map &rows = fixed.trilinos_matrix().RowMap();
         distributed->changing_rows.clear();
-        distributed->fixed_values.clear();
         for (const auto i : partition.owned)
           if (changing[i] != 0)
-            {
-              const int row = E.RowMap().LID(
-                static_cast<TrilinosWrappers::types::int_type>(i));
-              int     n      = 0;
-              double *values = nullptr;
-              E.ExtractMyRowView(row, n, values);
-              distributed->changing_rows.push_back(row);
-              distributed->fixed_values.insert(distributed->fixed_values.end(),
-                                               values,
-                                               values + n);
-            }
+            distributed->changing_rows.push_back(
+              rows.LID(static_cast<TrilinosWrappers::types::int_type>(i)));
+        distributed->fixed_values   = distributed->row_values();
         distributed->dofs_per_cell  = n_per_cell;
         distributed->cell_dofs      = std::move(kept_dofs);
         distributed->cell_stiffness = std::move(kept_stiffness);
@@ -882,18 +889,7 @@ namespace hrcontact
         const auto &d   = *distributed;
         rhs             = 0;
         // The rows the last step changed go back to the fixed part of K.
-        {
-          const Epetra_CrsMatrix &E     = A.trilinos_matrix();
-          const double           *fixed = d.fixed_values.data();
-          for (const int row : d.changing_rows)
-            {
-              int     n      = 0;
-              double *values = nullptr;
-              E.ExtractMyRowView(row, n, values);
-              std::copy(fixed, fixed + n, values);
-              fixed += n;
-            }
-        }
+        d.set_row_values(d.fixed_values);
         // Loads enter per dof below; the cells at Q and H rows bring
         // stiffness only.
         const unsigned int n_per_cell = d.dofs_per_cell;
