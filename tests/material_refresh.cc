@@ -86,7 +86,9 @@ solve(NewtonStepPath &path, const EquilibriumSystem &system)
              std::vector<double>(nq, 1.),
              p);
   Fields f;
-  path.stresses(f.s);
+  hrcontact::FieldVector s(system.n_stress_dofs); // complete: serial mesh
+  path.stresses(s);
+  f.s = Vector<double>(s.begin(), s.end());
   std::vector<double> w(nq);
   for (unsigned int k = 0; k < nq; ++k)
     w[k] = system.rows[system.contact_rows[k]].value;

@@ -49,7 +49,7 @@ compare(const std::string &scene,
   const auto  plain  = run<dim>(scene, refinements, "0");
   const auto  nested = run<dim>(scene, refinements, levels);
   const auto &a = plain->results(), &b = nested->results();
-  auto        to_vector = [](const dealii::Vector<double> &v) {
+  auto        to_vector = [](const auto &v) {
     return std::vector<double>(v.begin(), v.end());
   };
   std::cout << scene << ", " << refinements << " refinements, "

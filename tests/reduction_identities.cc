@@ -92,7 +92,8 @@ end
 
   // F s = B^T u with the global displacements.
   Vector<double> Fs, Btu(tau);
-  sys.multiply_flexibility(problem->results().stress, Fs);
+  const auto &s_h = problem->results().stress; // complete: a serial run
+  sys.multiply_flexibility(Vector<double>(s_h.begin(), s_h.end()), Fs);
   sys.B.Tvmult(Btu, problem->results().displacement);
   Vector<double> r = Fs;
   r -= Btu;

@@ -268,8 +268,10 @@ namespace hrcontact
           << " time(s) to " << r.linear_statistics.tolerance;
     if (condensed)
       log << std::endl;
+    bool finite = true;
     for (const double v : r.stress)
-      if (!std::isfinite(v))
+      finite &= std::isfinite(v);
+    if (Utilities::MPI::min(int(finite), r.stress.get_mpi_communicator()) == 0)
         throw InputError("Solve: the stresses are not finite; the problem is "
                          "singular or badly scaled.");
   }
@@ -485,6 +487,7 @@ namespace hrcontact
   HRProblem<dim>::collect_fields(const NewtonStepPath &path)
   {
     Results<dim> &r = results_;
+    reinit_field(r.stress, spaces.dof_handler_stress);
     path.stresses(r.stress);
     path.displacements(r.contact_w, r.displacement);
     // The reactions B~_r s - f~_r, each computed by the owner of its node

@@ -11,17 +11,6 @@ namespace hrcontact
 {
   using namespace dealii;
 
-  double
-  EquilibriumSystem::row_times(const EquilibriumRow &row,
-                               const Vector<double> &s) const
-  {
-    double sum = 0;
-    for (const auto &[dof, c] : row.combination)
-      for (auto it = B.begin(dof); it != B.end(dof); ++it)
-        sum += c * it->value() * s[it->column()];
-    return sum;
-  }
-
   void
   EquilibriumSystem::add_row_transpose(const EquilibriumRow &row,
                                        const double          coefficient,

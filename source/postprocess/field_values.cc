@@ -138,7 +138,7 @@ namespace hrcontact
   template <int dim>
   std::pair<double, double>
   stress_error(const MixedSpaces<dim> &spaces,
-               const Vector<double>   &s,
+               const FieldVector      &s,
                const Function<dim>    &reference)
   {
     constexpr unsigned int      n_comp = MixedSpaces<dim>::n_stress_components;
@@ -191,7 +191,7 @@ namespace hrcontact
                                    const Point<dim> &,                         \
                                    const std::string &);                       \
   template std::pair<double, double> stress_error<dim>(                        \
-    const MixedSpaces<dim> &, const Vector<double> &, const Function<dim> &);
+    const MixedSpaces<dim> &, const FieldVector &, const Function<dim> &);
   HRCONTACT_INSTANTIATE(2)
   HRCONTACT_INSTANTIATE(3)
 #undef HRCONTACT_INSTANTIATE

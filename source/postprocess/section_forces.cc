@@ -17,7 +17,7 @@ namespace hrcontact
     /** The stress tensor of the discrete field at a point of a cell. */
     SymmetricTensor<2, 2>
     stress_at(const MixedSpaces<2>                      &spaces,
-              const Vector<double>                      &stress,
+              const FieldVector                         &stress,
               const DoFHandler<2>::active_cell_iterator &cell,
               const Point<2>                            &unit_point,
               std::vector<types::global_dof_index>      &dofs)
@@ -63,7 +63,7 @@ namespace hrcontact
 
     std::vector<SectionForce>
     section_forces_2d(const MixedSpaces<2>              &spaces,
-                      const Vector<double>              &stress,
+                      const FieldVector                 &stress,
                       const Vector<double>              &displacement,
                       const std::vector<SectionStation> &stations)
     {
@@ -215,10 +215,13 @@ namespace hrcontact
   template <int dim>
   std::vector<SectionForce>
   compute_section_forces(const MixedSpaces<dim>            &spaces,
-                         const Vector<double>              &stress,
+                         const FieldVector                 &stress,
                          const Vector<double>              &displacement,
                          const std::vector<SectionStation> &stations)
   {
+    if (!is_complete(stress))
+      throw InputError("Postprocess: section forces need the stresses of "
+                       "the whole mesh (a serial mesh).");
     if constexpr (dim == 2)
       return section_forces_2d(spaces, stress, displacement, stations);
     else
@@ -228,10 +231,13 @@ namespace hrcontact
   template <int dim>
   std::array<double, 4>
   principal_stress_extremes(const MixedSpaces<dim> &spaces,
-                            const Vector<double>   &stress,
+                            const FieldVector      &stress,
                             const Point<dim>       &exclude_centre,
                             const double            exclude_radius)
   {
+    if (!is_complete(stress))
+      throw InputError("Postprocess: principal stress extremes need the "
+                       "stresses of the whole mesh (a serial mesh).");
     if constexpr (dim != 2)
       throw InputError("Postprocess: principal stress extremes are computed "
                        "in 2D only.");
@@ -266,22 +272,22 @@ namespace hrcontact
 
   template std::vector<SectionForce>
   compute_section_forces(const MixedSpaces<2> &,
-                         const Vector<double> &,
+                         const FieldVector &,
                          const Vector<double> &,
                          const std::vector<SectionStation> &);
   template std::vector<SectionForce>
   compute_section_forces(const MixedSpaces<3> &,
-                         const Vector<double> &,
+                         const FieldVector &,
                          const Vector<double> &,
                          const std::vector<SectionStation> &);
   template std::array<double, 4>
   principal_stress_extremes(const MixedSpaces<2> &,
-                            const Vector<double> &,
+                            const FieldVector &,
                             const Point<2> &,
                             double);
   template std::array<double, 4>
   principal_stress_extremes(const MixedSpaces<3> &,
-                            const Vector<double> &,
+                            const FieldVector &,
                             const Point<3> &,
                             double);
 } // namespace hrcontact

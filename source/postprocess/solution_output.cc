@@ -115,7 +115,7 @@ namespace hrcontact
       const MixedSpaces<dim> &spaces    = results.spaces;
       const Scene<dim>       &scene     = results.scene;
       const Vector<double>   &u         = results.displacement;
-      const Vector<double>   &s         = results.stress;
+      const FieldVector      &s         = results.stress;
       const DofPartition     &partition = results.partition;
       const auto &tria    = spaces.dof_handler_displacement.get_triangulation();
       using cell_iterator = typename Triangulation<dim>::cell_iterator;

@@ -403,9 +403,14 @@ namespace hrcontact
   }
 
   void
-  NullSpaceStep::stresses(Vector<double> &s) const
+  NullSpaceStep::stresses(FieldVector &s) const
   {
-    reduction.stress_from_s0(s0, s);
+    AssertThrow(is_complete(s),
+                ExcMessage("the null-space path runs on a serial mesh"));
+    Vector<double> complete;
+    reduction.stress_from_s0(s0, complete);
+    AssertDimension(complete.size(), s.size());
+    std::copy(complete.begin(), complete.end(), s.begin());
   }
 
   void
@@ -413,7 +418,7 @@ namespace hrcontact
                                Vector<double>            &u) const
   {
     Vector<double> s;
-    stresses(s);
+    reduction.stress_from_s0(s0, s);
     // Eq. 50-51.
     reduction.system_displacements(s, contact_w, u);
   }
@@ -1210,51 +1215,50 @@ namespace hrcontact
   }
 
   void
-  CondensedStep::stresses(Vector<double> &stress) const
+  CondensedStep::stresses(FieldVector &stress) const
   {
     // Every process recovers its own cells, the stored ones from their kept
     // F_c^{-1} B_c^T (already done by the last solve), the others (a lean
-    // system) from recomputed blocks, in the same operations; the stress
-    // dofs of a cell are its own, so the sum over the processes assembles s.
-    stress.reinit(system.n_stress_dofs);
+    // system) from recomputed blocks, in the same operations. The stress
+    // dofs of a cell are its own: on a distributed mesh the owner of the cell
+    // owns them, and its ghost cells' entries come from their owners; a
+    // complete vector (a serial mesh under MPI) is the sum over the
+    // processes.
+    AssertDimension(stress.size(), system.n_stress_dofs);
+    stress = 0;
     for (unsigned int k = 0; k < recovery_cells.size(); ++k)
       if (partition.owned_cell[recovery_cells[k]])
         {
           const auto &ds = system.cell_stress_dofs[recovery_cells[k]];
           for (unsigned int j = 0; j < ds.size(); ++j)
-            stress[ds[j]] = recovered_stress[recovered_offset[k] + j];
+            stress(ds[j]) = recovered_stress[recovered_offset[k] + j];
         }
-    if (recovery_complete)
+    if (!recovery_complete)
       {
-        if (partition.distributed())
-          {
-            const ArrayView<const double> values(stress.begin(), stress.size());
-            const ArrayView<double>       sums(stress.begin(), stress.size());
-            Utilities::MPI::sum(values, partition.communicator, sums);
-          }
-        return;
+        FullMatrix<double> Finv, R;
+        bool               have_R = false;
+        system.for_each_cell_blocks(
+          [&](const unsigned int c) {
+            return partition.owned_cell[c] && !system.is_stored(c);
+          },
+          [&](const CellBlocks &b) {
+            const auto &du = b.displacement_dofs;
+            const auto &ds = b.stress_dofs;
+            if (!(b.same_as_previous && have_R))
+              stress_recovery(b, Finv, R);
+            have_R = true;
+            for (unsigned int i = 0; i < ds.size(); ++i)
+              {
+                double sum = 0;
+                for (unsigned int j = 0; j < du.size(); ++j)
+                  sum += R(i, j) * u[du[j]];
+                stress(ds[i]) = sum;
+              }
+          });
       }
-    FullMatrix<double> Finv, R;
-    bool               have_R = false;
-    system.for_each_cell_blocks(
-      [&](const unsigned int c) {
-        return partition.owned_cell[c] && !system.is_stored(c);
-      },
-      [&](const CellBlocks &b) {
-        const auto &du = b.displacement_dofs;
-        const auto &ds = b.stress_dofs;
-        if (!(b.same_as_previous && have_R))
-          stress_recovery(b, Finv, R);
-        have_R = true;
-        for (unsigned int i = 0; i < ds.size(); ++i)
-          {
-            double sum = 0;
-            for (unsigned int j = 0; j < du.size(); ++j)
-              sum += R(i, j) * u[du[j]];
-            stress[ds[i]] = sum;
-          }
-      });
-    if (partition.distributed())
+    if (!is_complete(stress))
+      stress.update_ghost_values();
+    else if (partition.distributed())
       {
         const ArrayView<const double> values(stress.begin(), stress.size());
         const ArrayView<double>       sums(stress.begin(), stress.size());

@@ -8,6 +8,7 @@
 #include <hrcontact/core/scene.h>
 #include <hrcontact/discretisation/dof_partition.h>
 #include <hrcontact/discretisation/equilibrium_system.h>
+#include <hrcontact/discretisation/field_vector.h>
 #include <hrcontact/discretisation/mixed_spaces.h>
 #include <hrcontact/postprocess/summary.h>
 #include <hrcontact/solvers/contact_iteration.h>
@@ -55,9 +56,15 @@ namespace hrcontact
       return spaces.dof_handler_displacement.get_triangulation();
     }
 
-    /** The stresses s (stress dofs) and displacements u (eq. 51), complete
-     * on every process (in the mesh's numbering). */
-    dealii::Vector<double> stress, displacement;
+    /**
+     * The stresses s (stress dofs, the mesh's numbering): on a distributed
+     * mesh only this process's own and ghost cells' entries (FieldVector);
+     * complete on a serial mesh.
+     */
+    FieldVector stress;
+    /** The displacements u (eq. 51), complete on every process (the mesh's
+     * numbering). */
+    dealii::Vector<double> displacement;
     /** Normal displacement w_n per Q row (g + mu after the last update). */
     std::vector<double> contact_w;
     /** p = Q s - q per Q row; r = H s - f_H per prescribed (H) row. */

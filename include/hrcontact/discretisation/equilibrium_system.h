@@ -216,9 +216,19 @@ namespace hrcontact
                          dealii::Vector<double>       &residual) const;
 
     /** (B~ s)_r for the rotated row r; in a lean system only for Q and H
-     * rows (the stored cells are theirs). */
+     * rows (the stored cells are theirs). Any vector indexed by stress dof:
+     * a dealii::Vector, or a FieldVector holding the cells around the row's
+     * node. */
+    template <typename VectorType>
     double
-    row_times(const EquilibriumRow &row, const dealii::Vector<double> &s) const;
+    row_times(const EquilibriumRow &row, const VectorType &s) const
+    {
+      double sum = 0;
+      for (const auto &[dof, c] : row.combination)
+        for (auto it = B.begin(dof); it != B.end(dof); ++it)
+          sum += c * it->value() * s(it->column());
+      return sum;
+    }
 
     /** v += coefficient * (B~_r)^T. */
     void

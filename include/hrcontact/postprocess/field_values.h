@@ -45,7 +45,7 @@ namespace hrcontact
   template <int dim>
   std::pair<double, double>
   stress_error(const MixedSpaces<dim>       &spaces,
-               const dealii::Vector<double> &stress,
+               const FieldVector            &stress,
                const dealii::Function<dim>  &reference);
 } // namespace hrcontact
 

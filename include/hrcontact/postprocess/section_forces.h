@@ -6,6 +6,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <hrcontact/discretisation/field_vector.h>
 #include <hrcontact/discretisation/mixed_spaces.h>
 #include <hrcontact/geometry/tunnel_lining.h>
 
@@ -44,7 +45,7 @@ namespace hrcontact
   template <int dim>
   std::vector<SectionForce>
   compute_section_forces(const MixedSpaces<dim>            &spaces,
-                         const dealii::Vector<double>      &stress,
+                         const FieldVector                 &stress,
                          const dealii::Vector<double>      &displacement,
                          const std::vector<SectionStation> &stations);
 
@@ -58,7 +59,7 @@ namespace hrcontact
   template <int dim>
   std::array<double, 4>
   principal_stress_extremes(const MixedSpaces<dim>       &spaces,
-                            const dealii::Vector<double> &stress,
+                            const FieldVector            &stress,
                             const dealii::Point<dim>     &exclude_centre = {},
                             const double                  exclude_radius = 0);
 } // namespace hrcontact

@@ -11,6 +11,7 @@
 
 #include <hrcontact/constraints/constraint_law.h>
 #include <hrcontact/discretisation/dof_partition.h>
+#include <hrcontact/discretisation/field_vector.h>
 #include <hrcontact/discretisation/equilibrium_system.h>
 #include <hrcontact/solvers/equilibrium_reduction.h>
 
@@ -101,9 +102,13 @@ namespace hrcontact
           const std::vector<double> &alpha,
           std::vector<double>       &p);
 
-    /** Stresses of the last solve. */
+    /**
+     * Stresses of the last solve into s, sized by reinit_field(): on a
+     * distributed mesh each process fills its own cells' and its ghost
+     * cells' entries, without a global vector; otherwise s is complete.
+     */
     virtual void
-    stresses(dealii::Vector<double> &s) const = 0;
+    stresses(FieldVector &s) const = 0;
 
     /**
      * Nodal displacements of the last solve, given the normal displacements
@@ -172,8 +177,9 @@ namespace hrcontact
     void
     solve(const std::vector<ContactPiece> &pieces,
           std::vector<double>             &p) override;
+    /** s must be complete: the null-space path runs on a serial mesh. */
     void
-    stresses(dealii::Vector<double> &s) const override;
+    stresses(FieldVector &s) const override;
     void
     displacements(const std::vector<double> &contact_w,
                   dealii::Vector<double>    &u) const override;
@@ -231,7 +237,7 @@ namespace hrcontact
     solve(const std::vector<ContactPiece> &pieces,
           std::vector<double>             &p) override;
     void
-    stresses(dealii::Vector<double> &s) const override;
+    stresses(FieldVector &s) const override;
     void
     displacements(const std::vector<double> &contact_w,
                   dealii::Vector<double>    &u) const override;

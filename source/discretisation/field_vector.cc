@@ -1,0 +1,33 @@
+#include <deal.II/distributed/tria_base.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <hrcontact/discretisation/field_vector.h>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  reinit_field(FieldVector &v, const DoFHandler<dim> &dof_handler)
+  {
+    if (const auto *mesh =
+          dynamic_cast<const parallel::DistributedTriangulationBase<dim> *>(
+            &dof_handler.get_triangulation()))
+      {
+        IndexSet relevant;
+        DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+        v.reinit(dof_handler.locally_owned_dofs(),
+                 relevant,
+                 mesh->get_communicator());
+      }
+    else
+      v.reinit(dof_handler.n_dofs());
+  }
+
+  template void
+  reinit_field<2>(FieldVector &, const DoFHandler<2> &);
+  template void
+  reinit_field<3>(FieldVector &, const DoFHandler<3> &);
+} // namespace hrcontact
