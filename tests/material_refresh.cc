@@ -85,14 +85,16 @@ solve(NewtonStepPath &path, const EquilibriumSystem &system)
              std::vector<double>(nq, 0.),
              std::vector<double>(nq, 1.),
              p);
-  Fields f;
+  Fields                 f;
   hrcontact::FieldVector s(system.n_stress_dofs); // complete: serial mesh
   path.stresses(s);
   f.s = Vector<double>(s.begin(), s.end());
   std::vector<double> w(nq);
   for (unsigned int k = 0; k < nq; ++k)
     w[k] = system.rows[system.contact_rows[k]].value;
-  path.displacements(w, f.u);
+  hrcontact::FieldVector u(system.n_displacement_dofs); // complete
+  path.displacements(w, u);
+  f.u = Vector<double>(u.begin(), u.end());
   return f;
 }
 

@@ -92,9 +92,10 @@ end
 
   // F s = B^T u with the global displacements.
   Vector<double> Fs, Btu(tau);
-  const auto &s_h = problem->results().stress; // complete: a serial run
+  const auto    &s_h = problem->results().stress; // complete: a serial run
   sys.multiply_flexibility(Vector<double>(s_h.begin(), s_h.end()), Fs);
-  sys.B.Tvmult(Btu, problem->results().displacement);
+  const auto &u_h = problem->results().displacement;
+  sys.B.Tvmult(Btu, Vector<double>(u_h.begin(), u_h.end()));
   Vector<double> r = Fs;
   r -= Btu;
   // u.n = g on the Q rows.

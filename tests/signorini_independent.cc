@@ -169,7 +169,8 @@ run(const Case &c)
     }
 
   // ---- comparison -------------------------------------------------------
-  Vector<double> diff = problem->results().displacement;
+  const auto    &u_h = problem->results().displacement; // a serial run
+  Vector<double> diff(u_h.begin(), u_h.end());
   diff -= u;
   double      p_diff = 0, p_max = 0;
   const auto &sys = problem->results().system;

@@ -61,7 +61,7 @@ main()
                                          b.p_history[k][i] / factor));
             }
         }
-      dealii::Vector<double> du = base->results().displacement;
+      hrcontact::FieldVector du = base->results().displacement;
       du -= other->results().displacement;
       std::cout
         << "E and loads x " << factor

@@ -183,7 +183,8 @@ namespace hrcontact
         std::vector<double> w(opening.size());
         for (unsigned int k = 0; k < w.size(); ++k)
           w[k] = system.rows[system.contact_rows[k]].value + opening[k];
-        Vector<double> u;
+        // Gathered on every process: each re-linearises every row.
+        FieldVector u(system.n_displacement_dofs);
         path.displacements(w, u);
         const double u_max   = u.linfty_norm();
         bool         changed = false;

@@ -272,8 +272,8 @@ namespace hrcontact
     for (const double v : r.stress)
       finite &= std::isfinite(v);
     if (Utilities::MPI::min(int(finite), r.stress.get_mpi_communicator()) == 0)
-        throw InputError("Solve: the stresses are not finite; the problem is "
-                         "singular or badly scaled.");
+      throw InputError("Solve: the stresses are not finite; the problem is "
+                       "singular or badly scaled.");
   }
 
   template <int dim>
@@ -300,6 +300,7 @@ namespace hrcontact
     std::vector<double> w(nq);
     for (unsigned int k = 0; k < nq; ++k)
       w[k] = system.rows[system.contact_rows[k]].value;
+    reinit_field(r.floor_displacement, spaces.dof_handler_displacement);
     path.displacements(w, r.floor_displacement);
     log << "  Q1 floor (plain displacement solve, CG + AMG): "
         << r.floor_seconds << " s, " << r.floor_iterations << " CG iterations"
@@ -489,6 +490,7 @@ namespace hrcontact
     Results<dim> &r = results_;
     reinit_field(r.stress, spaces.dof_handler_stress);
     path.stresses(r.stress);
+    reinit_field(r.displacement, spaces.dof_handler_displacement);
     path.displacements(r.contact_w, r.displacement);
     // The reactions B~_r s - f~_r, each computed by the owner of its node
     // (on a distributed mesh only it has every cell around the node).
@@ -506,6 +508,22 @@ namespace hrcontact
     };
     reactions(system.contact_rows, r.contact_reactions);
     reactions(system.prescribed_rows, r.support_reactions);
+    // The node displacement of each Q row, by the owner of its node.
+    const unsigned int  nq = system.contact_rows.size();
+    std::vector<double> node_u(3 * nq, 0.);
+    for (unsigned int k = 0; k < nq; ++k)
+      {
+        const EquilibriumRow &row = system.rows[system.contact_rows[k]];
+        if (partition.owned.is_element(row.combination.front().first))
+          for (unsigned int d = 0; d < dim; ++d)
+            node_u[3 * k + d] = r.displacement(row.combination[d].first);
+      }
+    if (partition.distributed())
+      Utilities::MPI::sum(node_u, partition.communicator, node_u);
+    r.contact_node_displacement.assign(nq, {{0., 0., 0.}});
+    for (unsigned int k = 0; k < nq; ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        r.contact_node_displacement[k][d] = node_u[3 * k + d];
   }
 
   template <int dim>
@@ -572,12 +590,15 @@ namespace hrcontact
   HRProblem<dim>::output_results(std::ostream &log)
   {
     // Never write non-finite fields: stop before the first file instead.
+    bool finite = true;
     for (const double v : results_.displacement)
-      if (!std::isfinite(v))
-        throw NotConvergedError(
-          "the displacements are not finite (the solver diverged); no result "
-          "file was written. Reduce Augmented Lagrangian/Initial penalty, or "
-          "check the supports.");
+      finite &= std::isfinite(v);
+    if (Utilities::MPI::min(int(finite),
+                            results_.displacement.get_mpi_communicator()) == 0)
+      throw NotConvergedError(
+        "the displacements are not finite (the solver diverged); no result "
+        "file was written. Reduce Augmented Lagrangian/Initial penalty, or "
+        "check the supports.");
     TimerOutput::Scope t(timer, "postprocess and output");
     summarise_run();
     results_.wall_time = 0;

@@ -66,7 +66,8 @@ namespace hrcontact
         partition.communicator = communicator;
         partition.n_processes  = n_processes;
         partition.process      = Utilities::MPI::this_mpi_process(communicator);
-        partition.owned        = dof_handler.locally_owned_dofs();
+        partition.distributed_mesh = true;
+        partition.owned            = dof_handler.locally_owned_dofs();
         DoFTools::extract_locally_relevant_dofs(dof_handler,
                                                 partition.relevant);
         partition.owned_cell.assign(triangulation.n_active_cells(), false);

@@ -1,6 +1,6 @@
-#include <deal.II/distributed/tria_base.h>
-
 #include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/distributed/tria_base.h>
 
 #include <hrcontact/discretisation/field_vector.h>
 

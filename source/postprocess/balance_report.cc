@@ -129,9 +129,8 @@ namespace hrcontact
               }
           }
       }
-    double max_u = 0;
-    for (unsigned int i = 0; i < results.displacement.size(); i += 1)
-      max_u = std::max(max_u, std::abs(results.displacement[i]));
+    // Over the processes on a distributed mesh.
+    const double max_u = results.displacement.linfty_norm();
     summary.add("max_abs_displacement_component", max_u);
 
     log << "  total load     (";

@@ -78,7 +78,7 @@ namespace hrcontact
               out << row.direction_component(d) << ",";
             out << row.value << ",";
             for (unsigned int d = 0; d < dim; ++d)
-              out << results.displacement[row.combination[d].first] << ",";
+              out << results.contact_node_displacement[k][d] << ",";
             out << results.contact_w[k] << ",";
             for (unsigned int d = 0; d < dim; ++d)
               out << results.contact_reactions[k] * row.direction_component(d)
@@ -113,7 +113,7 @@ namespace hrcontact
                 {
                   out << system.node_coordinates[row.node][d] << ",";
                   w += row.combination[d].second *
-                       results.displacement[row.combination[d].first];
+                       results.contact_node_displacement[k][d];
                 }
               for (unsigned int d = 0; d < dim; ++d)
                 out << row.combination[d].second << ",";

@@ -36,7 +36,7 @@ namespace hrcontact
 
     Tensor<1, 2>
     displacement_at(const MixedSpaces<2>                      &spaces,
-                    const Vector<double>                      &displacement,
+                    const FieldVector                         &displacement,
                     const DoFHandler<2>::active_cell_iterator &stress_cell,
                     const Point<2>                            &unit_point)
     {
@@ -64,7 +64,7 @@ namespace hrcontact
     std::vector<SectionForce>
     section_forces_2d(const MixedSpaces<2>              &spaces,
                       const FieldVector                 &stress,
-                      const Vector<double>              &displacement,
+                      const FieldVector                 &displacement,
                       const std::vector<SectionStation> &stations)
     {
       const auto     &mapping = StaticMappingQ1<2>::mapping;
@@ -216,7 +216,7 @@ namespace hrcontact
   std::vector<SectionForce>
   compute_section_forces(const MixedSpaces<dim>            &spaces,
                          const FieldVector                 &stress,
-                         const Vector<double>              &displacement,
+                         const FieldVector                 &displacement,
                          const std::vector<SectionStation> &stations)
   {
     if (!is_complete(stress))
@@ -273,12 +273,12 @@ namespace hrcontact
   template std::vector<SectionForce>
   compute_section_forces(const MixedSpaces<2> &,
                          const FieldVector &,
-                         const Vector<double> &,
+                         const FieldVector &,
                          const std::vector<SectionStation> &);
   template std::vector<SectionForce>
   compute_section_forces(const MixedSpaces<3> &,
                          const FieldVector &,
-                         const Vector<double> &,
+                         const FieldVector &,
                          const std::vector<SectionStation> &);
   template std::array<double, 4>
   principal_stress_extremes(const MixedSpaces<2> &,

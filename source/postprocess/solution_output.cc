@@ -114,7 +114,7 @@ namespace hrcontact
     {
       const MixedSpaces<dim> &spaces    = results.spaces;
       const Scene<dim>       &scene     = results.scene;
-      const Vector<double>   &u         = results.displacement;
+      const FieldVector      &u         = results.displacement;
       const FieldVector      &s         = results.stress;
       const DofPartition     &partition = results.partition;
       const auto &tria    = spaces.dof_handler_displacement.get_triangulation();

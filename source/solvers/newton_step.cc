@@ -415,12 +415,16 @@ namespace hrcontact
 
   void
   NullSpaceStep::displacements(const std::vector<double> &contact_w,
-                               Vector<double>            &u) const
+                               FieldVector               &u) const
   {
-    Vector<double> s;
+    AssertThrow(is_complete(u),
+                ExcMessage("the null-space path runs on a serial mesh"));
+    Vector<double> s, complete;
     reduction.stress_from_s0(s0, s);
     // Eq. 50-51.
-    reduction.system_displacements(s, contact_w, u);
+    reduction.system_displacements(s, contact_w, complete);
+    AssertDimension(complete.size(), u.size());
+    std::copy(complete.begin(), complete.end(), u.begin());
   }
 
   // ------------------------------------------------------------------------
@@ -483,6 +487,10 @@ namespace hrcontact
                                "coordinates of HRAssembler::classify_rows"));
         distributed = std::make_unique<Distributed>();
       }
+    // The recovery cells of a lean system on a distributed mesh are owned or
+    // ghost cells: their dofs are relevant. Every cell stored (not lean)
+    // would include artificial ones.
+    ghosted_u = partition.distributed_mesh && !system.stored_cell.empty();
 
     assemble();
   }
@@ -946,10 +954,17 @@ namespace hrcontact
         else
           solve_direct_distributed();
         constraints.distribute(distributed->u);
-        u.reinit(n_u);
+        // The owned dofs, and the ghosts from their owners; or every dof on
+        // every process (see ghosted_u).
+        if (ghosted_u)
+          u.reinit(partition.owned, partition.relevant, partition.communicator);
+        else
+          u.reinit(n_u);
         for (const auto i : partition.owned)
-          u[i] = distributed->u[i];
-        if (partition.distributed())
+          u(i) = distributed->u[i];
+        if (ghosted_u)
+          u.update_ghost_values();
+        else if (partition.distributed())
           {
             const ArrayView<const double> values(u.begin(), u.size());
             const ArrayView<double>       sums(u.begin(), u.size());
@@ -1028,9 +1043,11 @@ namespace hrcontact
             r[dof] += coefficient * r[line.index];
         for (const auto &line : constraints.get_lines())
           r[line.index] = 0;
+        Vector<double> x(n_u);
+        direct_factor->factor.vmult(x, r);
+        constraints.distribute(x);
         u.reinit(n_u);
-        direct_factor->factor.vmult(u, r);
-        constraints.distribute(u);
+        std::copy(x.begin(), x.end(), u.begin());
         statistics.solve_seconds += timer.wall_time();
       }
 
@@ -1268,22 +1285,50 @@ namespace hrcontact
 
   void
   CondensedStep::displacements(const std::vector<double> &,
-                               Vector<double> &displacement) const
+                               FieldVector &displacement) const
   {
-    displacement = u;
+    AssertDimension(displacement.size(), system.n_displacement_dofs);
+    if (!is_complete(displacement))
+      {
+        // A field of the distributed mesh: its owned dofs are this
+        // partition's.
+        for (const auto i : partition.owned)
+          displacement(i) = u(i);
+        displacement.update_ghost_values();
+      }
+    else if (!ghosted_u)
+      std::copy(u.begin(), u.end(), displacement.begin());
+    else
+      {
+        // Gathered on every process (the owned dofs are contiguous, so the
+        // sum only adds zeros elsewhere).
+        displacement = 0;
+        for (const auto i : partition.owned)
+          displacement(i) = u(i);
+        const ArrayView<const double> values(displacement.begin(),
+                                             displacement.size());
+        const ArrayView<double> sums(displacement.begin(), displacement.size());
+        Utilities::MPI::sum(values, partition.communicator, sums);
+      }
   }
 
   void
   CondensedStep::contact_displacements(std::vector<double> &w) const
   {
-    w.resize(system.contact_rows.size());
+    // With u on the relevant dofs only, each row by the owner of its node
+    // (whose ghosts hold the node's dofs), summed.
+    w.assign(system.contact_rows.size(), 0.);
     for (unsigned int i = 0; i < w.size(); ++i)
       {
         const EquilibriumRow &row = system.rows[system.contact_rows[i]];
-        w[i]                      = 0;
+        if (ghosted_u &&
+            !partition.owned.is_element(row.combination.front().first))
+          continue;
         for (unsigned int k = 0; k < row.combination.size(); ++k)
-          w[i] += row.direction_component(k) * u[row.combination[k].first];
+          w[i] += row.direction_component(k) * u(row.combination[k].first);
       }
+    if (ghosted_u)
+      Utilities::MPI::sum(w, partition.communicator, w);
   }
 
   void

@@ -14,6 +14,7 @@
 #include <hrcontact/solvers/contact_iteration.h>
 #include <hrcontact/solvers/newton_step.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -62,9 +63,13 @@ namespace hrcontact
      * complete on a serial mesh.
      */
     FieldVector stress;
-    /** The displacements u (eq. 51), complete on every process (the mesh's
-     * numbering). */
-    dealii::Vector<double> displacement;
+    /** The displacements u (eq. 51), the mesh's numbering: on a
+     * distributed mesh the owned and ghost (locally relevant) dofs; complete
+     * on a serial mesh. */
+    FieldVector displacement;
+    /** The displacement of the node of each Q row (its first dim dofs'
+     * components, complete on every process: contact.csv). */
+    std::vector<std::array<double, 3>> contact_node_displacement;
     /** Normal displacement w_n per Q row (g + mu after the last update). */
     std::vector<double> contact_w;
     /** p = Q s - q per Q row; r = H s - f_H per prescribed (H) row. */
@@ -101,9 +106,9 @@ namespace hrcontact
      * displacement solve of the same mesh and supports, and its
      * displacements (empty when not timed).
      */
-    double                 floor_seconds    = 0;
-    unsigned int           floor_iterations = 0;
-    dealii::Vector<double> floor_displacement;
+    double       floor_seconds    = 0;
+    unsigned int floor_iterations = 0;
+    FieldVector  floor_displacement;
     /**
      * The coarser levels the nested iteration solved first (coarsest
      * first; empty without nested iteration). Their time is part of

@@ -31,6 +31,13 @@ namespace hrcontact
     dealii::IndexSet relevant;
     /** Per active cell index: whether this process assembles the cell. */
     std::vector<bool> owned_cell;
+    /**
+     * Read from a parallel::distributed::Triangulation: owned is a
+     * contiguous range (p4est numbering), and the cells this process does
+     * not own or see as ghosts are artificial. False on a serial mesh, also
+     * when p4est's partition was mapped onto it.
+     */
+    bool distributed_mesh = false;
 
     bool
     distributed() const

@@ -44,9 +44,9 @@ namespace hrcontact
    */
   template <int dim>
   std::pair<double, double>
-  stress_error(const MixedSpaces<dim>       &spaces,
-               const FieldVector            &stress,
-               const dealii::Function<dim>  &reference);
+  stress_error(const MixedSpaces<dim>      &spaces,
+               const FieldVector           &stress,
+               const dealii::Function<dim> &reference);
 } // namespace hrcontact
 
 #endif

@@ -46,7 +46,7 @@ namespace hrcontact
   std::vector<SectionForce>
   compute_section_forces(const MixedSpaces<dim>            &spaces,
                          const FieldVector                 &stress,
-                         const dealii::Vector<double>      &displacement,
+                         const FieldVector                 &displacement,
                          const std::vector<SectionStation> &stations);
 
   /**
@@ -58,10 +58,10 @@ namespace hrcontact
    */
   template <int dim>
   std::array<double, 4>
-  principal_stress_extremes(const MixedSpaces<dim>       &spaces,
-                            const FieldVector            &stress,
-                            const dealii::Point<dim>     &exclude_centre = {},
-                            const double                  exclude_radius = 0);
+  principal_stress_extremes(const MixedSpaces<dim>   &spaces,
+                            const FieldVector        &stress,
+                            const dealii::Point<dim> &exclude_centre = {},
+                            const double              exclude_radius = 0);
 } // namespace hrcontact
 
 #endif

@@ -11,8 +11,8 @@
 
 #include <hrcontact/constraints/constraint_law.h>
 #include <hrcontact/discretisation/dof_partition.h>
-#include <hrcontact/discretisation/field_vector.h>
 #include <hrcontact/discretisation/equilibrium_system.h>
+#include <hrcontact/discretisation/field_vector.h>
 #include <hrcontact/solvers/equilibrium_reduction.h>
 
 #include <memory>
@@ -112,11 +112,13 @@ namespace hrcontact
 
     /**
      * Nodal displacements of the last solve, given the normal displacements
-     * of the Q rows (g + mu after the last multiplier update).
+     * of the Q rows (g + mu after the last multiplier update), into u sized
+     * by the caller: distributed (reinit_field) or complete (reinit(n), then
+     * gathered on every process).
      */
     virtual void
     displacements(const std::vector<double> &contact_w,
-                  dealii::Vector<double>    &u) const = 0;
+                  FieldVector               &u) const = 0;
 
     /**
      * w_n = d . u of every Q row after the last solve, needed by the
@@ -182,7 +184,7 @@ namespace hrcontact
     stresses(FieldVector &s) const override;
     void
     displacements(const std::vector<double> &contact_w,
-                  dealii::Vector<double>    &u) const override;
+                  FieldVector               &u) const override;
     void
     rows_changed() override;
     /** M0 again (EquilibriumReduction::flexibility_changed), then Z, S. */
@@ -214,9 +216,11 @@ namespace hrcontact
    * into a distributed Trilinos matrix over the given DofPartition (every
    * cell it owns, constraints applied while assembling, as in step-40) and
    * solves it with CG + ML AMG, or with MUMPS (through Amesos) when Solver =
-   * direct runs on several processes. The solution is then gathered on every
-   * process, where the stresses, the reactions p and the multiplier updates are
-   * computed alike.
+   * direct runs on several processes. Each process then holds u on its
+   * relevant dofs (gathered whole only on a serial mesh under MPI, see
+   * ghosted_u), recovers the stresses of its cells, and computes p for the
+   * rows of the nodes it owns; p is summed, and the multiplier updates are
+   * computed alike on every process.
    */
   class CondensedStep : public NewtonStepPath
   {
@@ -240,7 +244,7 @@ namespace hrcontact
     stresses(FieldVector &s) const override;
     void
     displacements(const std::vector<double> &contact_w,
-                  dealii::Vector<double>    &u) const override;
+                  FieldVector               &u) const override;
     void
     contact_displacements(std::vector<double> &w) const override;
     /** K and the stress recovery again from the system's F_c. */
@@ -288,8 +292,16 @@ namespace hrcontact
     std::vector<dealii::FullMatrix<double>> recovery;
     /** Whether recovery_cells holds every cell. */
     bool recovery_complete = true;
-    /** u gathered on this process. */
-    dealii::Vector<double> u;
+    /**
+     * u of the last solve: on a distributed mesh with lean storage the owned
+     * and ghost (relevant) dofs only, which is all that the recovery cells
+     * and the rows of owned nodes read; otherwise complete, gathered after
+     * every solve (a serial mesh under MPI, whose owned dofs are not a
+     * contiguous range).
+     */
+    FieldVector u;
+    /** Whether u holds only the relevant dofs (above). */
+    bool ghosted_u = false;
     /**
      * The stresses of the recovery cells only, cell after cell (cell k's
      * from recovered_offset[k]): on a lean system the cells at Q and H rows,
