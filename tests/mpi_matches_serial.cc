@@ -105,6 +105,7 @@ void
 compare(const std::string &scene, const std::string &extra)
 {
   using dealii::Utilities::MPI::max;
+  using dealii::Utilities::MPI::min;
   using dealii::Utilities::MPI::sum;
   const auto  parallel = run<dim>(scene, extra, MPI_COMM_WORLD);
   const auto  serial   = run<dim>(scene, extra, MPI_COMM_SELF);
@@ -125,9 +126,9 @@ compare(const std::string &scene, const std::string &extra)
 
   // Length scale for matching positions.
   double size = 0;
-  for (const auto &x : S.system.node_coordinates)
+  for (unsigned int n = 0; n < S.system.node_coordinates.size(); ++n)
     for (unsigned int d = 0; d < dim; ++d)
-      size = std::max(size, std::abs(x[d]));
+      size = std::max(size, std::abs(S.system.node_coordinates[n][d]));
   const double tol = 1e-10 * size;
 
   // The contact rows, serial k <-> parallel rows[k].
@@ -155,27 +156,39 @@ compare(const std::string &scene, const std::string &extra)
   if (p_max > 0)
     p_difference /= p_max;
 
-  // Displacements, node by node.
-  auto node_keys = [](const hrcontact::EquilibriumSystem &system) {
-    std::vector<Key> keys;
-    for (const auto &x : system.node_coordinates)
-      keys.push_back(Key{{x[0], x[1], x[2], 0, 0, 0}});
-    return keys;
+  // Displacements, node by node: each process its own nodes (a distributed
+  // mesh keeps only their coordinates, and the distributed displacements
+  // only the owned and ghost dofs), matched to the serial nodes by position.
+  auto node_key = [](const hrcontact::EquilibriumSystem &system,
+                     const unsigned int                  node) {
+    const auto &x = system.node_coordinates[node];
+    return Key{{x[0], x[1], x[2], 0, 0, 0}};
   };
-  const auto nodes       = match(node_keys(S.system), node_keys(P.system), tol);
-  bool       nodes_match = nodes.size() == P.system.node_coordinates.size();
+  std::vector<Key>          serial_keys, own_keys;
+  std::vector<unsigned int> own_nodes;
+  for (unsigned int n = 0; n < S.system.node_coordinates.size(); ++n)
+    serial_keys.push_back(node_key(S.system, n));
+  for (unsigned int n = 0; n < P.system.node_coordinates.size(); ++n)
+    if (partition.owned.is_element(dim * n))
+      {
+        own_nodes.push_back(n);
+        own_keys.push_back(node_key(P.system, n));
+      }
+  const auto nodes        = match(own_keys, serial_keys, tol);
+  bool       nodes_match  = sum(static_cast<double>(own_nodes.size()),
+                         MPI_COMM_WORLD) == S.system.node_coordinates.size();
   double     u_difference = 0;
-  // Each process its own nodes (the distributed displacements hold only
-  // the owned and ghost dofs).
-  for (unsigned int n = 0; n < nodes.size(); ++n)
+  for (unsigned int k = 0; k < nodes.size(); ++k)
     {
-      nodes_match &= (nodes[n] >= 0);
-      if (nodes[n] >= 0 && P.displacement.in_local_range(dim * nodes[n]))
+      nodes_match &= (nodes[k] >= 0);
+      if (nodes[k] >= 0)
         for (unsigned int d = 0; d < dim; ++d)
-          u_difference = std::max(u_difference,
-                                  std::abs(S.displacement[dim * n + d] -
-                                           P.displacement[dim * nodes[n] + d]));
+          u_difference =
+            std::max(u_difference,
+                     std::abs(S.displacement[dim * nodes[k] + d] -
+                              P.displacement[dim * own_nodes[k] + d]));
     }
+  nodes_match = (min(nodes_match ? 1. : 0., MPI_COMM_WORLD) == 1.);
   u_difference =
     max(u_difference, MPI_COMM_WORLD) / S.displacement.linfty_norm();
 

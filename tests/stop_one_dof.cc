@@ -61,8 +61,9 @@ namespace
     system.rows     = {row};
     system.free_rows.clear();
     system.prescribed_rows.clear();
-    system.contact_rows     = {0};
-    system.node_coordinates = {{{0., 0., 0.}}};
+    system.contact_rows = {0};
+    system.node_coordinates.reinit(1);
+    system.node_coordinates.compress();
   }
 
   /** The hand solution (u, p) of the header. */

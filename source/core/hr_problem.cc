@@ -456,9 +456,8 @@ namespace hrcontact
         return;
       }
     TimerOutput::Scope t(timer, "augmented Lagrangian");
-    double             load_scale = 0;
-    for (unsigned int i = 0; i < system.load.size(); ++i)
-      load_scale = std::max(load_scale, std::abs(system.load[i]));
+    // The largest nodal load (distributed: the largest on any process).
+    const double load_scale = system.load.linfty_norm();
     contact_solver.set_nodal_compliance(
       scene.material->nodal_compliance(*triangulation));
     r.free_rigid_motions = rigid_motions_held_only_by_contact(system);

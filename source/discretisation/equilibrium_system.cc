@@ -87,8 +87,12 @@ namespace hrcontact
   EquilibriumSystem::equilibrium_residual(const Vector<double> &s,
                                           Vector<double>       &residual) const
   {
-    residual = load;
-    residual *= -1;
+    AssertThrow(is_complete(load),
+                ExcMessage("the equilibrium residual needs the whole load "
+                           "vector (a serial mesh)"));
+    residual.reinit(load.size());
+    for (unsigned int i = 0; i < load.size(); ++i)
+      residual[i] = -load[i];
     for_each_cell_blocks([](const unsigned int) { return true; },
                          [&](const CellBlocks &b) {
                            const auto &du = b.displacement_dofs;
@@ -172,15 +176,8 @@ namespace hrcontact
     const unsigned int n_modes = (dim == 2) ? 3 : 6;
     // Rotations about the centroid, scaled by the body's size, so that the
     // Gram matrix of translations and rotations is balanced.
-    std::array<double, 3> centre = {{0, 0, 0}};
-    for (const auto &x : system.node_coordinates)
-      for (unsigned int d = 0; d < 3; ++d)
-        centre[d] += x[d] / system.node_coordinates.size();
-    double size = 0;
-    for (const auto &x : system.node_coordinates)
-      for (unsigned int d = 0; d < 3; ++d)
-        size = std::max(size, std::abs(x[d] - centre[d]));
-    size = std::max(size, 1e-300);
+    const std::array<double, 3> centre = system.node_coordinates.centre();
+    const double size = std::max(system.node_coordinates.extent(), 1e-300);
 
     dealii::LAPACKFullMatrix<double> gram(n_modes, n_modes);
     auto                             add_row = [&](const EquilibriumRow &row) {

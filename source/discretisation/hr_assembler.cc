@@ -310,7 +310,13 @@ namespace hrcontact
       system.sparsity.copy_from(dsp);
     }
     system.B.reinit(system.sparsity);
-    system.load.reinit(dh_u.n_dofs());
+    // f: on a distributed mesh the owned and ghost dofs of this process,
+    // else complete (summed over the processes below).
+    const bool distributed_load = lean && lean->distributed_mesh;
+    if (distributed_load)
+      system.load.reinit(lean->owned, lean->relevant, lean->communicator);
+    else
+      system.load.reinit(dh_u.n_dofs());
     system.cell_stress_dofs.assign(n_cells, {});
     system.cell_displacement_dofs.assign(n_cells, {});
     system.cell_flexibility.assign(n_cells, FullMatrix<double>());
@@ -349,7 +355,12 @@ namespace hrcontact
              Utilities::MPI::all_gather(lean->communicator, error))
           if (error.empty())
             error = e;
-        if (error.empty())
+        if (error.empty() && distributed_load)
+          {
+            system.load.compress(VectorOperation::add);
+            system.load.update_ghost_values();
+          }
+        else if (error.empty())
           {
             const ArrayView<const double> values(system.load.begin(),
                                                  system.load.size());
@@ -428,17 +439,32 @@ namespace hrcontact
     // Nodes: node n has the dofs dim n + d (EquilibriumSystem::dof_node),
     // which also numbers them in the order the cells first reach them.
     const unsigned int n_nodes = dh_u.n_dofs() / dim;
-    system.node_coordinates.assign(n_nodes, {{0., 0., 0.}});
     auto node_dof = [](const unsigned int node, const unsigned int d) {
       return types::global_dof_index(dim) * node + d;
     };
-    // A distributed mesh: each process knows its own and its ghost cells;
-    // the owner of a node writes its coordinates and the sum replicates
-    // them (24 bytes a node; the rigid-body modes and the rows read them).
+    // A distributed mesh: each process keeps the coordinates of the nodes it
+    // owns (p4est numbers them as one contiguous range) and, further down,
+    // those of the gathered boundary faces; a serial mesh keeps them all.
     const auto *parallel_mesh =
       dynamic_cast<const parallel::TriangulationBase<dim> *>(
         &dh_u.get_triangulation());
     const IndexSet &owned_dofs = dh_u.locally_owned_dofs();
+    if (parallel_mesh)
+      {
+        AssertThrow(owned_dofs.is_contiguous() &&
+                      owned_dofs.n_elements() % dim == 0 &&
+                      (owned_dofs.n_elements() == 0 ||
+                       owned_dofs.nth_index_in_set(0) % dim == 0),
+                    ExcMessage("a distributed mesh whose processes do not "
+                               "own contiguous ranges of whole nodes"));
+        system.node_coordinates.reinit(n_nodes,
+                                       owned_dofs.n_elements() ?
+                                         owned_dofs.nth_index_in_set(0) / dim :
+                                         0,
+                                       owned_dofs.n_elements() / dim);
+      }
+    else
+      system.node_coordinates.reinit(n_nodes);
     for (const auto &cell : dh_u.active_cell_iterators())
       if (!cell->is_artificial())
         for (const auto v : cell->vertex_indices())
@@ -446,21 +472,15 @@ namespace hrcontact
             const auto node = cell->vertex_dof_index(v, 0) / dim;
             if (parallel_mesh && !owned_dofs.is_element(node_dof(node, 0)))
               continue;
+            NodeCoordinates::Point x = {{0., 0., 0.}};
             for (unsigned int d = 0; d < dim; ++d)
               {
                 AssertThrow(cell->vertex_dof_index(v, d) == node_dof(node, d),
                             ExcInternalError());
-                system.node_coordinates[node][d] = cell->vertex(v)[d];
+                x[d] = cell->vertex(v)[d];
               }
+            system.node_coordinates.set(node, x);
           }
-    if (parallel_mesh)
-      {
-        double           *first = system.node_coordinates.front().data();
-        const std::size_t n     = 3 * system.node_coordinates.size();
-        const ArrayView<const double> values(first, n);
-        const ArrayView<double>       sums(first, n);
-        Utilities::MPI::sum(values, parallel_mesh->get_communicator(), sums);
-      }
     auto node_point = [&](const unsigned int node) {
       Point<dim> x;
       for (unsigned int d = 0; d < dim; ++d)
@@ -547,6 +567,18 @@ namespace hrcontact
               faces.push_back(face);
             }
       }
+
+    // The nodes of the constrained boundary: every process classifies them.
+    for (const auto &face : faces)
+      for (unsigned int v = 0; v < face.nodes.size(); ++v)
+        {
+          NodeCoordinates::Point x = {{0., 0., 0.}};
+          for (unsigned int d = 0; d < dim; ++d)
+            x[d] = face.points[v][d];
+          system.node_coordinates.set(face.nodes[v], x);
+        }
+    system.node_coordinates.compress(
+      parallel_mesh ? parallel_mesh->get_communicator() : MPI_COMM_SELF);
 
     // What the constraint kinds ask of each node, face by face.
     NodeConstraintMap<dim> constraints;

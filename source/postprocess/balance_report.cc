@@ -27,25 +27,38 @@ namespace hrcontact
     double              scale = 0;
     // The directions d_r of a node are the primal basis to the dual basis
     // c_r of the rows: sum_r (f.c_r) d_r = f.
+    // A distributed load vector holds the owned and ghost dofs: each
+    // process sums the loads of the nodes it owns, and the sums are added.
+    const bool distributed = !is_complete(system.load);
+    auto       mine        = [&](const types::global_dof_index i) {
+      return !distributed || results.partition.owned.is_element(i);
+    };
     std::vector<bool> stored(system.lean_rows ? system.n_displacement_dofs : 0,
                              false);
     for (const auto &row : system.rows)
       {
+        if (system.lean_rows)
+          for (const auto &[dof, c] : row.combination)
+            stored[dof] = true;
+        if (!mine(row.combination.front().first))
+          continue;
         const double f_r = system.row_load(row);
         scale            = std::max(scale, std::abs(f_r));
         for (unsigned int d = 0; d < dim; ++d)
           load[d] += f_r * row.direction_component(d);
-        if (system.lean_rows)
-          for (const auto &[dof, c] : row.combination)
-            stored[dof] = true;
       }
     // Lean rows: the implicit free rows are the unit rows of the other dofs.
     for (unsigned int i = 0; i < stored.size(); ++i)
-      if (!stored[i])
+      if (!stored[i] && mine(i))
         {
           scale = std::max(scale, std::abs(system.load[i]));
           load[system.dof_component(i)] += system.load[i];
         }
+    if (distributed)
+      {
+        Utilities::MPI::sum(load, results.partition.communicator, load);
+        scale = Utilities::MPI::max(scale, results.partition.communicator);
+      }
     auto add_reaction = [&](const unsigned int r, const double value) {
       scale = std::max(scale, std::abs(value));
       for (unsigned int d = 0; d < dim; ++d)

@@ -1024,7 +1024,9 @@ namespace hrcontact
         // matrix.
         Vector<double> u_c(n_u), r(n_u);
         constraints.distribute(u_c);
-        K.residual(r, u_c, system.load);
+        K.residual(r,
+                   u_c,
+                   Vector<double>(system.load.begin(), system.load.end()));
         for (const auto &[row, piece] : springs)
           {
             spring(*row, *piece, spring_matrix, spring_force);

@@ -8,6 +8,9 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <hrcontact/discretisation/field_vector.h>
+#include <hrcontact/discretisation/node_coordinates.h>
+
 #include <array>
 #include <functional>
 #include <memory>
@@ -111,7 +114,14 @@ namespace hrcontact
 
     dealii::SparsityPattern      sparsity;
     dealii::SparseMatrix<double> B;
-    dealii::Vector<double>       load;
+    /**
+     * The load vector f: complete on a serial mesh (also under MPI); on a
+     * distributed mesh the owned and ghost (relevant) dofs only, which are
+     * all that the owned cells, the rows of owned nodes and the reactions
+     * read (8 bytes a dof of the whole mesh on every process before: 13 MB
+     * at Hertz refinement 9).
+     */
+    FieldVector load;
 
     /**
      * Lean storage, for the condensed path on large meshes: B, F and the cell
@@ -121,8 +131,7 @@ namespace hrcontact
      * `recompute_cell_blocks`, once when the condensed stiffness is built and
      * once for the final stresses, so the memory of the replicated blocks
      * (about 3 KB per cell in 2D, 30 KB in 3D) is not spent. Empty: every
-     * cell is stored (the null-space path needs them all). The load vector
-     * is always complete.
+     * cell is stored (the null-space path needs them all).
      */
     std::vector<bool> stored_cell;
     /** Calls the worker with the blocks of every cell the filter accepts. */
@@ -172,9 +181,11 @@ namespace hrcontact
         unsigned int,
         const std::vector<dealii::types::global_dof_index> &)> &worker) const;
 
-    std::vector<EquilibriumRow>        rows;
-    std::vector<unsigned int>          free_rows, contact_rows, prescribed_rows;
-    std::vector<std::array<double, 3>> node_coordinates;
+    std::vector<EquilibriumRow> rows;
+    std::vector<unsigned int>   free_rows, contact_rows, prescribed_rows;
+    /** Complete on a serial mesh; on a distributed one this process's
+     * nodes and the constrained boundary's (NodeCoordinates). */
+    NodeCoordinates node_coordinates;
 
     /**
      * Lean rows, for the condensed path on large meshes: `rows` holds only
@@ -208,8 +219,8 @@ namespace hrcontact
 
     /**
      * B s - f over every cell, from storage or recomputed: the equilibrium
-     * residual of any row, for checks. A lean system evaluates every cell
-     * again on each process.
+     * residual of any row, for checks on a serial mesh (f complete). A lean
+     * system evaluates every cell again.
      */
     void
     equilibrium_residual(const dealii::Vector<double> &s,
@@ -236,7 +247,8 @@ namespace hrcontact
                       const double            coefficient,
                       dealii::Vector<double> &v) const;
 
-    /** The rotated load f~_r. */
+    /** The rotated load f~_r (the row's node must be owned or ghost on a
+     * distributed mesh). */
     double
     row_load(const EquilibriumRow &row) const;
 
