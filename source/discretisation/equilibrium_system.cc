@@ -17,7 +17,7 @@ namespace hrcontact
                                        Vector<double>       &v) const
   {
     for (const auto &[dof, c] : row.combination)
-      for (auto it = B.begin(dof); it != B.end(dof); ++it)
+      for (auto it = B.begin(b_row(dof)); it != B.end(b_row(dof)); ++it)
         v[it->column()] += coefficient * c * it->value();
   }
 
@@ -59,7 +59,7 @@ namespace hrcontact
           blocks.B.reinit(du.size(), ds.size());
           for (unsigned int i = 0; i < du.size(); ++i)
             for (unsigned int j = 0; j < ds.size(); ++j)
-              blocks.B(i, j) = B.el(du[i], ds[j]);
+              blocks.B(i, j) = B.el(b_row(du[i]), ds[j]);
           blocks.F = cell_flexibility[c];
           worker(blocks);
         }

@@ -289,8 +289,15 @@ namespace hrcontact
       return !lean || lean->owned_cell[c];
     };
 
+    // B's rows: every dof, or on a distributed mesh the owned and ghost ones.
+    system.B_dofs = IndexSet();
+    if (lean && lean->distributed_mesh)
+      system.B_dofs = lean->relevant;
     {
-      DynamicSparsityPattern dsp(dh_u.n_dofs(), system.n_stress_dofs);
+      DynamicSparsityPattern dsp(system.B_dofs.size() == 0 ?
+                                   dh_u.n_dofs() :
+                                   system.B_dofs.n_elements(),
+                                 system.n_stress_dofs);
       std::vector<types::global_dof_index> du, ds;
       auto cs = spaces.dof_handler_stress.begin_active();
       for (const auto &cu : dh_u.active_cell_iterators())
@@ -303,7 +310,7 @@ namespace hrcontact
               cs->get_dof_indices(ds);
               for (const auto i : du)
                 for (const auto j : ds)
-                  dsp.add(i, j);
+                  dsp.add(system.b_row(i), j);
             }
           ++cs;
         }
@@ -326,24 +333,24 @@ namespace hrcontact
     std::string error;
     try
       {
-        for_each_cell([&](
-                        const unsigned int c) { return owned(c) || stored(c); },
-                      [&](const CellBlocks &b) {
-                        const auto &du = b.displacement_dofs;
-                        const auto &ds = b.stress_dofs;
-                        if (owned(b.cell))
-                          for (unsigned int i = 0; i < du.size(); ++i)
-                            system.load(du[i]) += b.load(i);
-                        if (!stored(b.cell))
-                          return;
-                        for (unsigned int i = 0; i < du.size(); ++i)
-                          for (unsigned int j = 0; j < ds.size(); ++j)
-                            if (b.B(i, j) != 0)
-                              system.B.add(du[i], ds[j], b.B(i, j));
-                        system.cell_stress_dofs[b.cell]       = ds;
-                        system.cell_displacement_dofs[b.cell] = du;
-                        system.cell_flexibility[b.cell]       = b.F;
-                      });
+        for_each_cell(
+          [&](const unsigned int c) { return owned(c) || stored(c); },
+          [&](const CellBlocks &b) {
+            const auto &du = b.displacement_dofs;
+            const auto &ds = b.stress_dofs;
+            if (owned(b.cell))
+              for (unsigned int i = 0; i < du.size(); ++i)
+                system.load(du[i]) += b.load(i);
+            if (!stored(b.cell))
+              return;
+            for (unsigned int i = 0; i < du.size(); ++i)
+              for (unsigned int j = 0; j < ds.size(); ++j)
+                if (b.B(i, j) != 0)
+                  system.B.add(system.b_row(du[i]), ds[j], b.B(i, j));
+            system.cell_stress_dofs[b.cell]       = ds;
+            system.cell_displacement_dofs[b.cell] = du;
+            system.cell_flexibility[b.cell]       = b.F;
+          });
       }
     catch (const InputError &e)
       {

@@ -164,7 +164,9 @@ namespace hrcontact
         double *const col = A.data() + static_cast<std::size_t>(i) * tau;
         for (const auto &[dof, c] : row.combination)
           if (c != 0)
-            for (auto it = sys.B.begin(dof); it != sys.B.end(dof); ++it)
+            for (auto it = sys.B.begin(sys.b_row(dof));
+                 it != sys.B.end(sys.b_row(dof));
+                 ++it)
               col[it->column()] += c * it->value();
         for (unsigned int j = 0; j < tau; ++j)
           row_norm[i] += col[j] * col[j];
@@ -294,7 +296,9 @@ namespace hrcontact
         double *const         QRi = QR.data() + static_cast<std::size_t>(i) * m;
         for (const auto &[dof, c] : row.combination)
           if (c != 0)
-            for (auto it = sys.B.begin(dof); it != sys.B.end(dof); ++it)
+            for (auto it = sys.B.begin(sys.b_row(dof));
+                 it != sys.B.end(sys.b_row(dof));
+                 ++it)
               {
                 const unsigned int k = position[it->column()];
                 const double       v = c * it->value();

@@ -699,7 +699,9 @@ namespace hrcontact
     for (const unsigned int r : system.contact_rows)
       if (owned_row(system.rows[r]))
         for (const auto &[dof, c] : system.rows[r].combination)
-          for (auto it = system.B.begin(dof); it != system.B.end(dof); ++it)
+          for (auto it = system.B.begin(system.b_row(dof));
+               it != system.B.end(system.b_row(dof));
+               ++it)
             position.emplace(it->column(), none);
     for (unsigned int k = 0; k < recovery_cells.size(); ++k)
       {
@@ -721,7 +723,9 @@ namespace hrcontact
           for (unsigned int k = 0; k < row.combination.size(); ++k)
             {
               const auto dof = row.combination[k].first;
-              for (auto it = system.B.begin(dof); it != system.B.end(dof); ++it)
+              for (auto it = system.B.begin(system.b_row(dof));
+                   it != system.B.end(system.b_row(dof));
+                   ++it)
                 {
                   const std::size_t at = position.at(it->column());
                   AssertThrow(at != none,
