@@ -38,6 +38,15 @@ namespace hrcontact
     , timer(std::cout, TimerOutput::never, TimerOutput::wall_times)
   {
     scene.parse_parameters(prm);
+    // The material Newton iteration (F_c refreshed per step, issue 18) is
+    // not part of the solve yet: a stress-dependent law would be solved with
+    // its compliance at zero stress, silently linear.
+    if (!scene.material->is_linear())
+      throw InputError(
+        "Material/Model: the law is nonlinear (its compliance depends on the "
+        "stress), and hrcontact does not solve nonlinear materials yet; "
+        "only its point evaluation is available. Use a linear law, or "
+        "Ramberg-Osgood with coefficient 0 or exponent 1.");
     spaces.parse_parameters(prm);
     reduction.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
