@@ -61,6 +61,10 @@ namespace hrcontact
             for (unsigned int j = 0; j < ds.size(); ++j)
               blocks.B(i, j) = B.el(b_row(du[i]), ds[j]);
           blocks.F = cell_flexibility[c];
+          if (c < cell_strain_term.size())
+            blocks.strain_term = cell_strain_term[c];
+          else
+            blocks.strain_term.reinit(0);
           worker(blocks);
         }
   }

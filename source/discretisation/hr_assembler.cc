@@ -138,6 +138,9 @@ namespace hrcontact
             Bc = 0;
           }
         fc = 0;
+        // A nonlinear law at a stress state: e_c = int psi : eps(sigma).
+        const bool strain_term = stress_state && !material.is_linear();
+        blocks.strain_term.reinit(strain_term ? n_s : 0);
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           {
             const double JxW = fv_u.JxW(q);
@@ -169,6 +172,13 @@ namespace hrcontact
                                                    fv_u.quadrature_point(q));
             for (unsigned int j = 0; j < n_s; ++j)
               psi[j] = fv_s.shape_value(j, q);
+            if (strain_term)
+              {
+                const SymmetricTensor<2, dim> eps =
+                  material.strain(sigma_q, fv_u.quadrature_point(q));
+                for (unsigned int i = 0; i < n_s; ++i)
+                  blocks.strain_term(i) += psi[i] * (T[comp_s[i]] * eps) * JxW;
+              }
             // Terms with a zero compliance or strain factor add nothing.
             for (unsigned int i = 0; i < n_s; ++i)
               {
@@ -247,6 +257,11 @@ namespace hrcontact
                 throw InputError(s.str());
               }
           }
+        // d_c = e_c - F_c s_c (CellBlocks::strain_term).
+        if (strain_term)
+          for (unsigned int i = 0; i < n_s; ++i)
+            for (unsigned int j = 0; j < n_s; ++j)
+              blocks.strain_term(i) -= Fc(i, j) * (*stress_state)[ds[j]];
         worker(blocks);
         ++cs;
       }
@@ -425,9 +440,14 @@ namespace hrcontact
                                         const Vector<double> &stress)
   {
     stress_state = std::make_shared<const Vector<double>>(stress);
+    system.cell_strain_term.clear();
+    if (!scene.material->is_linear())
+      system.cell_strain_term.resize(system.n_cells());
     for_each_cell([&](const unsigned int c) { return system.is_stored(c); },
                   [&](const CellBlocks &b) {
                     system.cell_flexibility[b.cell] = b.F;
+                    if (b.strain_term.size() > 0)
+                      system.cell_strain_term[b.cell] = b.strain_term;
                   });
     if (system.recompute_cell_blocks)
       set_recompute(system);

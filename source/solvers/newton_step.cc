@@ -522,6 +522,9 @@ namespace hrcontact
     const unsigned int n_cells = system.n_cells();
     recovery_cells.clear();
     recovery.clear();
+    recovered_shift.clear();
+    strain_load_dofs.clear();
+    strain_load_values.clear();
     unsigned int n_stored = 0;
     for (unsigned int c = 0; c < n_cells; ++c)
       n_stored += system.is_stored(c);
@@ -536,6 +539,8 @@ namespace hrcontact
     // system): K_c = B_c F_c^{-1} B_c^T of the owned cells to `add_owned`,
     // and F_c^{-1} B_c^T of the stored cells kept.
     FullMatrix<double> Finv, R, Kc;
+    Vector<double>     shift, cell_load;
+    std::size_t        stress_count = 0; // of the recovery cells so far
     bool               have_R = false, have_Kc = false;
     auto               each_cell =
       [&](const std::function<void(const unsigned int,
@@ -561,6 +566,17 @@ namespace hrcontact
                 have_R  = true;
                 have_Kc = false;
               }
+            // A material Newton step's strain term: the stresses shift by
+            // -F_c^{-1} d_c and the load by B_c F_c^{-1} d_c.
+            // Stored cells bring the d_c of the last refresh, recomputed
+            // ones that of the same stress state.
+            if (b.strain_term.size() > 0)
+              {
+                shift.reinit(b.strain_term.size());
+                Finv.vmult(shift, b.strain_term);
+              }
+            else
+              shift.reinit(0);
             if (owned_cell(b.cell))
               {
                 if (!have_Kc)
@@ -570,11 +586,32 @@ namespace hrcontact
                     have_Kc = true;
                   }
                 add_owned(b.cell, du, Kc);
+                if (shift.size() > 0)
+                  {
+                    strain_load_cell_size = du.size(); // the same for all
+                    cell_load.reinit(du.size());
+                    b.B.vmult(cell_load, shift);
+                    strain_load_dofs.insert(strain_load_dofs.end(),
+                                            du.begin(),
+                                            du.end());
+                    strain_load_values.insert(strain_load_values.end(),
+                                              cell_load.begin(),
+                                              cell_load.end());
+                  }
               }
             if (system.is_stored(b.cell))
               {
                 recovery_cells.push_back(b.cell);
                 recovery.push_back(R);
+                if (shift.size() > 0)
+                  {
+                    // Zeros for the cells before the first with a term.
+                    recovered_shift.resize(stress_count, 0.);
+                    recovered_shift.insert(recovered_shift.end(),
+                                           shift.begin(),
+                                           shift.end());
+                  }
+                stress_count += b.stress_dofs.size();
               }
           });
       };
@@ -680,6 +717,29 @@ namespace hrcontact
   }
 
   void
+  CondensedStep::add_strain_loads(
+    const std::function<void(const std::vector<types::global_dof_index> &,
+                             const Vector<double> &)> &add) const
+  {
+    if (strain_load_dofs.empty())
+      return;
+    const std::size_t n = strain_load_cell_size;
+    AssertThrow(n > 0 && strain_load_dofs.size() % n == 0, ExcInternalError());
+    std::vector<types::global_dof_index> dofs(n);
+    Vector<double>                       values(n);
+    for (std::size_t first = 0; first < strain_load_dofs.size(); first += n)
+      {
+        std::copy(strain_load_dofs.begin() + first,
+                  strain_load_dofs.begin() + first + n,
+                  dofs.begin());
+        std::copy(strain_load_values.begin() + first,
+                  strain_load_values.begin() + first + n,
+                  values.begin());
+        add(dofs, values);
+      }
+  }
+
+  void
   CondensedStep::index_recovered_stresses()
   {
     recovered_offset.assign(1, 0);
@@ -687,6 +747,9 @@ namespace hrcontact
       recovered_offset.push_back(recovered_offset.back() +
                                  system.cell_stress_dofs[c].size());
     recovered_stress.assign(recovered_offset.back(), 0.);
+    // Zeros for the recovery cells after the last with a strain term.
+    if (!recovered_shift.empty())
+      recovered_shift.resize(recovered_offset.back(), 0.);
 
     // The stress dofs the owned Q rows read, and where each is recovered
     // (a row's B entries belong to the cells around its node, all of them
@@ -938,6 +1001,10 @@ namespace hrcontact
             constraints.distribute_local_to_global(
               spring_matrix, spring_force, node_dofs, A, rhs);
           }
+        add_strain_loads([&](const std::vector<types::global_dof_index> &dofs,
+                             const Vector<double> &values) {
+          constraints.distribute_local_to_global(values, dofs, rhs);
+        });
         Vector<double>                       one_load(1);
         std::vector<types::global_dof_index> one_dof(1);
         for (const auto i : partition.owned)
@@ -1031,6 +1098,11 @@ namespace hrcontact
         K.residual(r,
                    u_c,
                    Vector<double>(system.load.begin(), system.load.end()));
+        add_strain_loads([&](const std::vector<types::global_dof_index> &dofs,
+                             const Vector<double> &values) {
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            r[dofs[i]] += values[i];
+        });
         for (const auto &[row, piece] : springs)
           {
             spring(*row, *piece, spring_matrix, spring_force);
@@ -1069,6 +1141,9 @@ namespace hrcontact
               sum += recovery[k](i, j) * u[du[j]];
             s[i] = sum;
           }
+        if (!recovered_shift.empty())
+          for (unsigned int i = 0; i < n; ++i)
+            s[i] -= recovered_shift[recovered_offset[k] + i];
       }
     // p of each row by the owner of its node, the only process that has
     // every cell around it on a distributed mesh; the sum replicates p.
@@ -1270,12 +1345,16 @@ namespace hrcontact
             if (!(b.same_as_previous && have_R))
               stress_recovery(b, Finv, R);
             have_R = true;
+            // A material Newton step: s_c = F_c^{-1} (B_c^T u - d_c).
+            Vector<double> shift(b.strain_term.size());
+            if (shift.size() > 0)
+              Finv.vmult(shift, b.strain_term);
             for (unsigned int i = 0; i < ds.size(); ++i)
               {
                 double sum = 0;
                 for (unsigned int j = 0; j < du.size(); ++j)
                   sum += R(i, j) * u[du[j]];
-                stress(ds[i]) = sum;
+                stress(ds[i]) = sum - (shift.size() > 0 ? shift[i] : 0.);
               }
           });
       }

@@ -88,6 +88,14 @@ namespace hrcontact
      * from storage). */
     dealii::Vector<double> load;
     /**
+     * The linear term d_c = e_c - F_c s_c of a material Newton step at the
+     * stress state s (HRAssembler::stress_state), e_c = int psi : eps(s)
+     * the strain of the law: the complementary energy's second-order
+     * expansion about s is 1/2 s^T F_c s + d_c^T s + const. Empty for a
+     * linear law and before a state is given (d_c = 0).
+     */
+    dealii::Vector<double> strain_term;
+    /**
      * Whether B and F are those of the cell handed to the worker just
      * before (this cell is a translation of it and the material is
      * homogeneous), to the last bit: a worker may keep what it derived from
@@ -113,6 +121,12 @@ namespace hrcontact
     std::vector<std::vector<dealii::types::global_dof_index>>
                                             cell_displacement_dofs;
     std::vector<dealii::FullMatrix<double>> cell_flexibility;
+    /**
+     * Per cell the strain term d_c of CellBlocks at the last stress state
+     * (HRAssembler::refresh_flexibility); empty when the law is linear, and
+     * a cell's entry empty where d_c = 0.
+     */
+    std::vector<dealii::Vector<double>> cell_strain_term;
 
     dealii::SparsityPattern sparsity;
     /** Rows by b_row(displacement dof), columns by global stress dof. */

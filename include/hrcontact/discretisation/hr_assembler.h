@@ -59,7 +59,9 @@ namespace hrcontact
      * A material whose compliance depends on its state (MaterialLaw): F_c
      * again for the stored cells with the material evaluated at the
      * stresses s at each quadrature point; a lean system recomputes every
-     * other cell with the same state. Call NewtonStepPath::
+     * other cell with the same state. A nonlinear law also gets the strain
+     * terms d_c of its Newton step about s (EquilibriumSystem::
+     * cell_strain_term), for the stored cells. Call NewtonStepPath::
      * flexibility_changed() afterwards.
      */
     void

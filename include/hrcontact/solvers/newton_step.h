@@ -15,6 +15,7 @@
 #include <hrcontact/discretisation/field_vector.h>
 #include <hrcontact/solvers/equilibrium_reduction.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -265,6 +266,11 @@ namespace hrcontact
     /** recovered_offset and the terms of p from the recovery cells. */
     void
     index_recovered_stresses();
+    /** Each owned cell's B_c F_c^-1 d_c with its dofs (strain_load_*). */
+    void
+    add_strain_loads(const std::function<
+                     void(const std::vector<dealii::types::global_dof_index> &,
+                          const dealii::Vector<double> &)> &add) const;
     /** Solve the assembled Trilinos system by CG + AMG (warm start in u). */
     void
     solve_cg_amg();
@@ -311,6 +317,17 @@ namespace hrcontact
      */
     std::vector<double>      recovered_stress;
     std::vector<std::size_t> recovered_offset;
+    /**
+     * A material Newton step (EquilibriumSystem::cell_strain_term): per
+     * recovery cell F_c^{-1} d_c, laid out as recovered_stress and taken
+     * from it (s_c = F_c^{-1} (B_c^T u - d_c)), and per owned cell the load
+     * B_c F_c^{-1} d_c and its dofs, cell after cell. Empty for a linear
+     * law.
+     */
+    std::vector<double>                          recovered_shift;
+    std::vector<dealii::types::global_dof_index> strain_load_dofs;
+    std::vector<double>                          strain_load_values;
+    std::size_t                                  strain_load_cell_size = 0;
     /**
      * p = Q s - q without a global stress vector: for each Q row this
      * process owns, its terms (the index k into the row's combination, the
