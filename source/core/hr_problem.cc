@@ -29,6 +29,7 @@ namespace hrcontact
     PostprocessorManager<dim>::declare_parameters(prm);
     OutputSettings::declare_parameters(prm);
     NestedIterationSettings::declare_parameters(prm);
+    MaterialIteration::declare_parameters(prm);
   }
 
   template <int dim>
@@ -38,15 +39,6 @@ namespace hrcontact
     , timer(std::cout, TimerOutput::never, TimerOutput::wall_times)
   {
     scene.parse_parameters(prm);
-    // The material Newton iteration (F_c refreshed per step, issue 18) is
-    // not part of the solve yet: a stress-dependent law would be solved with
-    // its compliance at zero stress, silently linear.
-    if (!scene.material->is_linear())
-      throw InputError(
-        "Material/Model: the law is nonlinear (its compliance depends on the "
-        "stress), and hrcontact does not solve nonlinear materials yet; "
-        "only its point evaluation is available. Use a linear law, or "
-        "Ramberg-Osgood with coefficient 0 or exponent 1.");
     spaces.parse_parameters(prm);
     reduction.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
@@ -54,6 +46,26 @@ namespace hrcontact
     postprocessors.parse_parameters(prm, scene.constants);
     output.parse_parameters(prm);
     nested.parse_parameters(prm);
+    material_iteration.parse_parameters(prm);
+    // A nonlinear law (MaterialIteration) is solved on the serial condensed
+    // path so far: the null-space path has no strain terms d_c, and the
+    // Newton steps are not yet combined with the contact iteration or
+    // distributed over processes.
+    if (!scene.material->is_linear())
+      {
+        const std::string law =
+          "Material/Model: the law is nonlinear (its compliance depends on "
+          "the stress)";
+        if (reduction.path == "null-space")
+          throw InputError(law + ", and its Newton steps run on the "
+                                 "condensed path only: set Equilibrium "
+                                 "reduction/Path = condensed (or automatic).");
+        if (Utilities::MPI::job_supports_mpi() &&
+            Utilities::MPI::n_mpi_processes(communicator) > 1)
+          throw InputError(law + ", and hrcontact solves nonlinear materials "
+                                 "on one process only so far; run without "
+                                 "mpirun.");
+      }
     std::ostringstream text;
     prm.print_parameters(text, ParameterHandler::ShortPRM);
     parameter_text = text.str();
@@ -183,7 +195,8 @@ namespace hrcontact
         "Contact/Update curved obstacles = true needs Equilibrium "
         "reduction/Path = condensed (or automatic): the null-space "
         "reduction is built once from the initial constraint directions.");
-    if (displacement_al || relinearise || distributed_mesh)
+    if (displacement_al || relinearise || distributed_mesh ||
+        !scene.material->is_linear())
       path = "condensed";
     if (path == "automatic")
       path = (dense_bytes <= reduction.automatic_dense_limit) ? "null-space" :
@@ -236,6 +249,11 @@ namespace hrcontact
     for (const unsigned int row : system.contact_rows)
       r.has_contact |=
         system.rows[row].unilateral || bool(system.rows[row].law);
+    if (r.has_contact && !scene.material->is_linear())
+      throw InputError(
+        "Material/Model: the law is nonlinear, and hrcontact does not yet "
+        "combine its Newton steps with unilateral contact or constraint "
+        "laws; use a linear law for this scene, or bilateral supports.");
     Timer contact_timer;
     start_from_coarser_level(r.solution_path, log);
     if (!r.coarse_levels.empty())
@@ -456,10 +474,40 @@ namespace hrcontact
             "stop every translation and rotation.");
         TimerOutput::Scope  t(timer, "solve");
         std::vector<double> p;
-        path.solve(std::vector<bool>(nq, false),
-                   std::vector<double>(nq, 0.),
-                   std::vector<double>(nq, 1.),
-                   p);
+        auto                linear_solve = [&]() {
+          path.solve(std::vector<bool>(nq, false),
+                     std::vector<double>(nq, 0.),
+                     std::vector<double>(nq, 1.),
+                     p);
+        };
+        r.material_steps = 0;
+        r.material_changes.clear();
+        if (scene.material->is_linear())
+          linear_solve();
+        else
+          {
+            // Newton on the complementary energy: F_c and d_c refreshed at
+            // the last stresses (a serial mesh: every stress dof here).
+            HRAssembler<dim>              assembler(scene, spaces);
+            MaterialIteration::Operations operations;
+            operations.solve    = linear_solve;
+            operations.stresses = [&](Vector<double> &s) {
+              FieldVector field;
+              reinit_field(field, spaces.dof_handler_stress);
+              path.stresses(field);
+              s.reinit(field.size());
+              std::copy(field.begin(), field.end(), s.begin());
+            };
+            operations.linearise_at = [&](const Vector<double> &s) {
+              assembler.refresh_flexibility(system, s);
+              path.flexibility_changed();
+            };
+            material_iteration.solve(operations, log);
+            r.material_steps   = material_iteration.n_steps();
+            r.material_changes = material_iteration.change_history();
+            log << "  material iteration: " << r.material_steps
+                << " Newton steps" << std::endl;
+          }
         for (unsigned int k = 0; k < nq; ++k)
           r.contact_w[k] = system.rows[system.contact_rows[k]].value;
         return;
@@ -576,6 +624,13 @@ namespace hrcontact
     summary.add("iterations", r.contact ? r.contact->history.size() : 0);
     summary.add("newton_steps", r.contact ? r.contact->total_newton_steps : 0);
     summary.add("converged", r.converged() ? "true" : "false");
+    if (!scene.material->is_linear())
+      {
+        summary.add("material_newton_steps", r.material_steps);
+        summary.add("material_stress_change",
+                    r.material_changes.empty() ? 0. :
+                                                 r.material_changes.back());
+      }
     if (!r.coarse_levels.empty())
       {
         unsigned int newton = 0, solves = 0;

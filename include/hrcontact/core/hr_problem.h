@@ -15,6 +15,7 @@
 #include <hrcontact/postprocess/postprocessor.h>
 #include <hrcontact/solvers/augmented_lagrangian_solver.h>
 #include <hrcontact/solvers/equilibrium_reduction.h>
+#include <hrcontact/solvers/material_iteration.h>
 #include <hrcontact/solvers/nested_iteration.h>
 #include <hrcontact/solvers/newton_step.h>
 
@@ -139,7 +140,10 @@ namespace hrcontact
     PostprocessorManager<dim> postprocessors;
     OutputSettings            output;
     NestedIterationSettings   nested;
-    EquilibriumSystem         system;
+    /** Newton's method on a nonlinear law's complementary energy (unused
+     * for a linear one). */
+    MaterialIteration material_iteration;
+    EquilibriumSystem system;
     /** The p4est partition of the displacement dofs and cells. */
     DofPartition        partition;
     Results<dim>        results_;

@@ -124,6 +124,13 @@ namespace hrcontact
       double seconds = 0;
     };
     std::vector<CoarseLevel> coarse_levels;
+    /**
+     * A nonlinear material law (MaterialIteration): the Newton steps it
+     * took, each one linear solve, and the relative stress change after
+     * each step but the first (empty for a linear law).
+     */
+    unsigned int        material_steps = 0;
+    std::vector<double> material_changes;
     /** Wall time of the run's sections so far (for summary.txt). */
     double wall_time = 0;
 

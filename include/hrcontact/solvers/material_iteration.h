@@ -1,0 +1,80 @@
+#ifndef hrcontact_material_iteration_h
+#define hrcontact_material_iteration_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <functional>
+#include <ostream>
+#include <vector>
+
+namespace hrcontact
+{
+  /**
+   * Newton's method on the complementary energy of a nonlinear material
+   * (section 2.3: any convex potential phi^c, the algorithm unchanged).
+   * Each step replaces phi^c of every cell by its second-order expansion
+   * about the last stresses s_k, F_c(s_k) and the strain term d_c = e_c(s_k)
+   * - F_c s_k (HRAssembler::refresh_flexibility), and solves the linear
+   * mixed problem that leaves: on the condensed path s_c = F_c^{-1} (B_c^T
+   * u - d_c) and K u = f + sum B_c F_c^{-1} d_c. Equilibrium holds at every
+   * step; the strains of the law become compatible as the steps converge,
+   * quadratically near the answer. The first step is the linear solve with
+   * the compliance at zero stress.
+   *
+   * The iteration stops when the largest change of a stress dof is at most
+   * Relative tolerance times the largest stress; a step that leaves a
+   * non-finite stress, or Maximum steps without convergence, ends the run
+   * with a NotConvergedError naming the cause.
+   */
+  class MaterialIteration
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /** What one material step does, given by the problem that owns the
+     * path and the assembler. */
+    struct Operations
+    {
+      /** One linear solve at the current F_c and d_c. */
+      std::function<void()> solve;
+      /** The stresses of the last solve (every stress dof). */
+      std::function<void(dealii::Vector<double> &)> stresses;
+      /** F_c and d_c at the given stresses; the path told. */
+      std::function<void(const dealii::Vector<double> &)> linearise_at;
+    };
+
+    /**
+     * Steps until the stresses stop changing. Logs one line per step
+     * (its change), throws NotConvergedError as above.
+     */
+    void
+    solve(const Operations &operations, std::ostream &log);
+
+    /** max |s_k - s_{k-1}| / max |s_k| per step after the first. */
+    const std::vector<double> &
+    change_history() const
+    {
+      return changes;
+    }
+    /** The linear solves taken (the first, elastic one included). */
+    unsigned int
+    n_steps() const
+    {
+      return steps;
+    }
+
+    double       relative_tolerance = 1e-10;
+    unsigned int maximum_steps      = 30;
+
+  private:
+    std::vector<double> changes;
+    unsigned int        steps = 0;
+  };
+} // namespace hrcontact
+
+#endif

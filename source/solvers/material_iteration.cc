@@ -1,0 +1,97 @@
+#include <hrcontact/core/input.h>
+#include <hrcontact/solvers/material_iteration.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  void
+  MaterialIteration::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material iteration");
+    prm.declare_entry(
+      "Relative tolerance",
+      "1e-10",
+      Patterns::Double(0),
+      "A nonlinear material law (Material/Model) is solved by Newton's "
+      "method on its complementary energy, the cell compliances refreshed at "
+      "the last stresses each step. It stops when the largest change of a "
+      "stress dof is at most this times the largest stress (near the answer "
+      "the change falls quadratically: 1e-10 costs one step more than "
+      "1e-5). Not used by a linear law.");
+    prm.declare_entry("Maximum steps",
+                      "30",
+                      Patterns::Integer(1),
+                      "Newton steps of the material iteration before the run "
+                      "stops as not converged (each step is one linear "
+                      "solve and one refresh of the cell compliances).");
+    prm.leave_subsection();
+  }
+
+  void
+  MaterialIteration::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material iteration");
+    relative_tolerance = prm.get_double("Relative tolerance");
+    maximum_steps      = prm.get_integer("Maximum steps");
+    prm.leave_subsection();
+    if (!(relative_tolerance > 0))
+      throw InputError("Material iteration/Relative tolerance must be "
+                       "positive (0 would never stop).");
+  }
+
+  void
+  MaterialIteration::solve(const Operations &operations, std::ostream &log)
+  {
+    changes.clear();
+    steps = 0;
+    Vector<double> previous, current;
+    operations.solve();
+    ++steps;
+    operations.stresses(current);
+    while (true)
+      {
+        for (const double v : current)
+          if (!std::isfinite(v))
+            throw NotConvergedError(
+              "Material iteration: step " + std::to_string(steps) +
+              " left non-finite stresses (the law's compliance is singular "
+              "or the load exceeds what the material can carry).");
+        if (steps > 1)
+          {
+            Vector<double> difference = current;
+            difference -= previous;
+            const double scale  = current.linfty_norm();
+            const double change = (scale > 0) ?
+                                    difference.linfty_norm() / scale :
+                                    difference.linfty_norm();
+            changes.push_back(change);
+            log << "  material step " << steps << ": stress change "
+                << std::scientific << std::setprecision(2) << change
+                << std::defaultfloat << std::setprecision(6) << std::endl;
+            if (change <= relative_tolerance)
+              return;
+          }
+        if (steps >= maximum_steps)
+          {
+            std::ostringstream s;
+            s << "Material iteration: no convergence in " << maximum_steps
+              << " Newton steps (the last stress change "
+              << std::setprecision(3) << (changes.empty() ? 0. : changes.back())
+              << " of the largest stress, tolerance " << relative_tolerance
+              << "). Raise Material iteration/Maximum steps, or check that "
+                 "the load is one the material can carry.";
+            throw NotConvergedError(s.str());
+          }
+        operations.linearise_at(current);
+        previous = current;
+        operations.solve();
+        ++steps;
+        operations.stresses(current);
+      }
+  }
+} // namespace hrcontact
