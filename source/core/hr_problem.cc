@@ -47,25 +47,14 @@ namespace hrcontact
     output.parse_parameters(prm);
     nested.parse_parameters(prm);
     material_iteration.parse_parameters(prm);
-    // A nonlinear law (MaterialIteration) is solved on the serial condensed
-    // path so far: the null-space path has no strain terms d_c, and the
-    // Newton steps are not yet combined with the contact iteration or
-    // distributed over processes.
-    if (!scene.material->is_linear())
-      {
-        const std::string law =
-          "Material/Model: the law is nonlinear (its compliance depends on "
-          "the stress)";
-        if (reduction.path == "null-space")
-          throw InputError(law + ", and its Newton steps run on the "
-                                 "condensed path only: set Equilibrium "
-                                 "reduction/Path = condensed (or automatic).");
-        if (Utilities::MPI::job_supports_mpi() &&
-            Utilities::MPI::n_mpi_processes(communicator) > 1)
-          throw InputError(law + ", and hrcontact solves nonlinear materials "
-                                 "on one process only so far; run without "
-                                 "mpirun.");
-      }
+    // A nonlinear law (MaterialIteration) runs on one process so far: the
+    // stress state of its Newton steps is a vector of every stress dof.
+    if (!scene.material->is_linear() && Utilities::MPI::job_supports_mpi() &&
+        Utilities::MPI::n_mpi_processes(communicator) > 1)
+      throw InputError(
+        "Material/Model: the law is nonlinear (its compliance depends on the "
+        "stress), and hrcontact solves nonlinear materials on one process "
+        "only so far; run without mpirun.");
     std::ostringstream text;
     prm.print_parameters(text, ParameterHandler::ShortPRM);
     parameter_text = text.str();
@@ -195,8 +184,7 @@ namespace hrcontact
         "Contact/Update curved obstacles = true needs Equilibrium "
         "reduction/Path = condensed (or automatic): the null-space "
         "reduction is built once from the initial constraint directions.");
-    if (displacement_al || relinearise || distributed_mesh ||
-        !scene.material->is_linear())
+    if (displacement_al || relinearise || distributed_mesh)
       path = "condensed";
     if (path == "automatic")
       path = (dense_bytes <= reduction.automatic_dense_limit) ? "null-space" :

@@ -136,6 +136,21 @@ namespace hrcontact
   }
 
   void
+  EquilibriumSystem::add_strain_terms(Vector<double> &v) const
+  {
+    for (unsigned int c = 0; c < cell_strain_term.size(); ++c)
+      {
+        const auto &d = cell_strain_term[c];
+        if (d.size() == 0)
+          continue;
+        const auto &dofs = cell_stress_dofs[c];
+        AssertDimension(d.size(), dofs.size());
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          v[dofs[i]] += d[i];
+      }
+  }
+
+  void
   EquilibriumSystem::displacements_from_row_values(
     const std::vector<double> &row_values,
     Vector<double>            &u) const

@@ -380,10 +380,12 @@ namespace hrcontact
         }
     M0_factor.swap(G0);
 
-    // b0 = R^T v, v = -F t + H^T u-hat + Q^T g.
+    // b0 = R^T v, v = -F t + H^T u-hat + Q^T g, and -d for a material
+    // Newton step (the energy's linear term d^T s).
     {
       Vector<double> v;
       sys.multiply_flexibility(t, v);
+      sys.add_strain_terms(v);
       v *= -1.;
       for (const unsigned int r : sys.prescribed_rows)
         sys.add_row_transpose(sys.rows[r], sys.rows[r].value, v);
@@ -494,8 +496,11 @@ namespace hrcontact
   {
     const EquilibriumSystem &sys = *system;
     AssertDimension(contact_w.size(), sys.contact_rows.size());
+    // The strains F s (+ d for a material Newton step: the law's strain
+    // linearised at the last state).
     Vector<double> rhs;
     sys.multiply_flexibility(s, rhs);
+    sys.add_strain_terms(rhs);
     for (const unsigned int r : sys.prescribed_rows)
       sys.add_row_transpose(sys.rows[r], -sys.rows[r].value, rhs);
     for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)

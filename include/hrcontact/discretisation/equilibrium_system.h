@@ -294,6 +294,15 @@ namespace hrcontact
     multiply_flexibility(const dealii::Vector<double> &s,
                          dealii::Vector<double>       &Fs) const;
 
+    /**
+     * v += d, the strain terms of a material Newton step (cell_strain_term;
+     * nothing for a linear law): with them F s + d is the gradient of the
+     * expanded complementary energy, the strain the stresses s would have
+     * under the law linearised at the last state.
+     */
+    void
+    add_strain_terms(dealii::Vector<double> &v) const;
+
     /** Global displacement vector from one value per row (every row
      * stored: not for lean rows). */
     void
