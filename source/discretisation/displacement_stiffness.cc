@@ -15,19 +15,20 @@ namespace hrcontact
     const MixedSpaces<dim> &spaces)
     : spaces(spaces)
   {
-    const auto *law =
-      dynamic_cast<const LinearElasticity<dim> *>(scene.material.get());
+    // A nonlinear law: the elastic solve of its elastic part.
+    const LinearElasticity<dim> *law = scene.material->elastic_part();
     if (!law)
       throw InputError("Output/Time the Q1 floor: the floor is a linear "
-                       "elastic displacement solve; it needs Material/Model "
-                       "= linear elasticity.");
+                       "elastic displacement solve; Material/Model names a "
+                       "law without a linear elastic part.");
     const double E = law->youngs_modulus(), nu = law->poisson_ratio();
-    lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-    mu     = E / (2 * (1 + nu));
+    mu = E / (2 * (1 + nu));
     // Plane stress: sigma_zz = 0 condenses lambda to 2 lambda mu / (lambda +
-    // 2 mu).
-    if (dim == 2 && !law->is_plane_strain())
-      lambda = 2 * lambda * mu / (lambda + 2 * mu);
+    // 2 mu) = E nu / (1 - nu^2), finite at nu = 1/2 (which plane stress
+    // allows) where lambda itself is not.
+    lambda = (dim == 2 && !law->is_plane_strain()) ?
+               E * nu / (1 - nu * nu) :
+               E * nu / ((1 + nu) * (1 - 2 * nu));
   }
 
   template <int dim>

@@ -43,6 +43,12 @@ namespace hrcontact
       const dealii::SymmetricTensor<2, dim> &sigma) const override;
     std::string
     plane_condition_name() const override;
+    /** Itself. */
+    const LinearElasticity<dim> *
+    elastic_part() const override
+    {
+      return this;
+    }
 
     double
     youngs_modulus() const

@@ -16,6 +16,9 @@
 
 namespace hrcontact
 {
+  template <int dim>
+  class LinearElasticity;
+
   /**
    * A material in stresses: its convex complementary potential phi^c(sigma)
    * (section 2.3), through the strain eps = d phi^c / d sigma and the
@@ -83,6 +86,17 @@ namespace hrcontact
     /** "plane strain" or "plane stress" in 2D, "3D" in 3D. */
     virtual std::string
     plane_condition_name() const = 0;
+
+    /**
+     * The linear isotropic law the compliance starts from at zero stress,
+     * if the law has one: the Q1 floor (Output/Time the Q1 floor) solves
+     * the plain displacement problem of this part. Null if none.
+     */
+    virtual const LinearElasticity<dim> *
+    elastic_part() const
+    {
+      return nullptr;
+    }
   };
 
   /**

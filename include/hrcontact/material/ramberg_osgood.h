@@ -62,6 +62,12 @@ namespace hrcontact
       const dealii::SymmetricTensor<2, dim> &sigma) const override;
     std::string
     plane_condition_name() const override;
+    /** E^-1 sigma: the floor's elastic solve. */
+    const LinearElasticity<dim> *
+    elastic_part() const override
+    {
+      return &elastic;
+    }
 
     /** The equivalent (von Mises) stress sqrt(3/2 s : s) of sigma. */
     static double
