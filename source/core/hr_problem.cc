@@ -47,14 +47,6 @@ namespace hrcontact
     output.parse_parameters(prm);
     nested.parse_parameters(prm);
     material_iteration.parse_parameters(prm);
-    // A nonlinear law (MaterialIteration) runs on one process so far: the
-    // stress state of its Newton steps is a vector of every stress dof.
-    if (!scene.material->is_linear() && Utilities::MPI::job_supports_mpi() &&
-        Utilities::MPI::n_mpi_processes(communicator) > 1)
-      throw InputError(
-        "Material/Model: the law is nonlinear (its compliance depends on the "
-        "stress), and hrcontact solves nonlinear materials on one process "
-        "only so far; run without mpirun.");
     std::ostringstream text;
     prm.print_parameters(text, ParameterHandler::ShortPRM);
     parameter_text = text.str();
@@ -475,18 +467,16 @@ namespace hrcontact
         else
           {
             // Newton on the complementary energy: F_c and d_c refreshed at
-            // the last stresses (a serial mesh: every stress dof here).
+            // the last stresses (on a distributed mesh each process those of
+            // its own and ghost cells, all the cells it assembles).
             HRAssembler<dim>              assembler(scene, spaces);
             MaterialIteration::Operations operations;
             operations.solve    = linear_solve;
-            operations.stresses = [&](Vector<double> &s) {
-              FieldVector field;
-              reinit_field(field, spaces.dof_handler_stress);
-              path.stresses(field);
-              s.reinit(field.size());
-              std::copy(field.begin(), field.end(), s.begin());
+            operations.stresses = [&](FieldVector &s) {
+              reinit_field(s, spaces.dof_handler_stress);
+              path.stresses(s);
             };
-            operations.linearise_at = [&](const Vector<double> &s) {
+            operations.linearise_at = [&](const FieldVector &s) {
               assembler.refresh_flexibility(system, s);
               path.flexibility_changed();
             };

@@ -439,7 +439,22 @@ namespace hrcontact
   HRAssembler<dim>::refresh_flexibility(EquilibriumSystem    &system,
                                         const Vector<double> &stress)
   {
-    stress_state = std::make_shared<const Vector<double>>(stress);
+    FieldVector complete(stress.size());
+    std::copy(stress.begin(), stress.end(), complete.begin());
+    refresh_flexibility(system, complete);
+  }
+
+  template <int dim>
+  void
+  HRAssembler<dim>::refresh_flexibility(EquilibriumSystem &system,
+                                        const FieldVector &stress)
+  {
+    auto state = std::make_shared<FieldVector>();
+    state->reinit(stress, true);
+    state->copy_locally_owned_data_from(stress);
+    if (!is_complete(stress))
+      state->update_ghost_values();
+    stress_state = state;
     system.cell_strain_term.clear();
     if (!scene.material->is_linear())
       system.cell_strain_term.resize(system.n_cells());

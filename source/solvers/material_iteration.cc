@@ -49,22 +49,24 @@ namespace hrcontact
   {
     changes.clear();
     steps = 0;
-    Vector<double> previous, current;
+    FieldVector previous, current;
     operations.solve();
     ++steps;
     operations.stresses(current);
     while (true)
       {
-        for (const double v : current)
-          if (!std::isfinite(v))
-            throw NotConvergedError(
-              "Material iteration: step " + std::to_string(steps) +
-              " left non-finite stresses (the law's compliance is singular "
-              "or the load exceeds what the material can carry).");
+        // A sum over every process: a NaN anywhere stops them all.
+        if (!std::isfinite(current.l2_norm()))
+          throw NotConvergedError(
+            "Material iteration: step " + std::to_string(steps) +
+            " left non-finite stresses (the law's compliance is singular "
+            "or the load exceeds what the material can carry).");
         if (steps > 1)
           {
-            Vector<double> difference = current;
-            difference -= previous;
+            FieldVector difference;
+            difference.reinit(current, true);
+            difference.copy_locally_owned_data_from(current);
+            difference.add(-1., previous);
             const double scale  = current.linfty_norm();
             const double change = (scale > 0) ?
                                     difference.linfty_norm() / scale :
@@ -88,7 +90,8 @@ namespace hrcontact
             throw NotConvergedError(s.str());
           }
         operations.linearise_at(current);
-        previous = current;
+        previous.reinit(current, true);
+        previous.copy_locally_owned_data_from(current);
         operations.solve();
         ++steps;
         operations.stresses(current);

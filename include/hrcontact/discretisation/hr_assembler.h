@@ -6,6 +6,7 @@
 #include <hrcontact/core/scene.h>
 #include <hrcontact/discretisation/dof_partition.h>
 #include <hrcontact/discretisation/equilibrium_system.h>
+#include <hrcontact/discretisation/field_vector.h>
 #include <hrcontact/discretisation/mixed_spaces.h>
 
 #include <memory>
@@ -62,8 +63,13 @@ namespace hrcontact
      * other cell with the same state. A nonlinear law also gets the strain
      * terms d_c of its Newton step about s (EquilibriumSystem::
      * cell_strain_term), for the stored cells. Call NewtonStepPath::
-     * flexibility_changed() afterwards.
+     * flexibility_changed() afterwards. On a distributed mesh `stress`
+     * holds the owned and ghost cells' stresses (NewtonStepPath::stresses
+     * fills them), which are all the cells a process assembles.
      */
+    void
+    refresh_flexibility(EquilibriumSystem &system, const FieldVector &stress);
+    /** The same from a vector of every stress dof (a serial mesh). */
     void
     refresh_flexibility(EquilibriumSystem            &system,
                         const dealii::Vector<double> &stress);
@@ -76,7 +82,7 @@ namespace hrcontact
     void
     set_recompute(EquilibriumSystem &system) const;
     /** The stresses the material is evaluated at (null: zero stress). */
-    std::shared_ptr<const dealii::Vector<double>> stress_state;
+    std::shared_ptr<const FieldVector> stress_state;
   };
   /**
    * The free directions of a node: Gram-Schmidt remainders of the unit axes

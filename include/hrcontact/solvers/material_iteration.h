@@ -3,7 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <deal.II/lac/vector.h>
+#include <hrcontact/discretisation/field_vector.h>
 
 #include <functional>
 #include <ostream>
@@ -42,10 +42,11 @@ namespace hrcontact
     {
       /** One linear solve at the current F_c and d_c. */
       std::function<void()> solve;
-      /** The stresses of the last solve (every stress dof). */
-      std::function<void(dealii::Vector<double> &)> stresses;
+      /** The stresses of the last solve (a distributed mesh: the owned
+       * and ghost cells'). */
+      std::function<void(FieldVector &)> stresses;
       /** F_c and d_c at the given stresses; the path told. */
-      std::function<void(const dealii::Vector<double> &)> linearise_at;
+      std::function<void(const FieldVector &)> linearise_at;
     };
 
     /**
