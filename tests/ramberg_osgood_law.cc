@@ -170,25 +170,4 @@ main()
       {
         std::cout << "  " << e.what() << '\n';
       }
-
-  // What the material Newton iteration does not do yet, a problem refuses
-  // by name: contact (and several processes, not testable here).
-  const std::string cantilever =
-    hrcontact_tests::read_file(std::string(SOURCE_DIR) +
-                               "/../parameters/cantilever.prm") +
-    "subsection Material\n  set Model = Ramberg-Osgood\n"
-    "  set Ramberg-Osgood coefficient = 0.5\n"
-    "  set Ramberg-Osgood exponent = 3\nend\n"
-    "subsection Output\n  set Write solution = false\nend\n";
-  try
-    {
-      hrcontact_tests::solve_from_text<2>(
-        cantilever + "subsection Contact\n"
-                     "  set Obstacles = 2: 0, -0.5 : 0, -1\nend\n");
-      std::cout << "A nonlinear law with contact: NOT refused\n";
-    }
-  catch (const InputError &e)
-    {
-      std::cout << "A nonlinear law: " << e.what() << '\n';
-    }
 }

@@ -229,11 +229,6 @@ namespace hrcontact
     for (const unsigned int row : system.contact_rows)
       r.has_contact |=
         system.rows[row].unilateral || bool(system.rows[row].law);
-    if (r.has_contact && !scene.material->is_linear())
-      throw InputError(
-        "Material/Model: the law is nonlinear, and hrcontact does not yet "
-        "combine its Newton steps with unilateral contact or constraint "
-        "laws; use a linear law for this scene, or bilateral supports.");
     Timer contact_timer;
     start_from_coarser_level(r.solution_path, log);
     if (!r.coarse_levels.empty())
@@ -505,11 +500,68 @@ namespace hrcontact
     AssertThrow(relinearisations.size() <= 1,
                 ExcMessage("one kind of constraint rows that follow the "
                            "configuration per scene"));
-    if (relinearisations.empty())
-      contact_solver.solve(system, path, load_scale, log);
+    auto contact_solve = [&]() {
+      if (relinearisations.empty())
+        contact_solver.solve(system, path, load_scale, log);
+      else
+        contact_solver.solve(
+          system, path, load_scale, *relinearisations.front(), log);
+    };
+    r.material_steps = 0;
+    r.material_changes.clear();
+    if (scene.material->is_linear())
+      contact_solve();
     else
-      contact_solver.solve(
-        system, path, load_scale, *relinearisations.front(), log);
+      {
+        // A nonlinear law with contact: each material Newton step is a
+        // whole augmented Lagrangian solve at the compliances and strain
+        // terms of the last stresses, started (consistent and Macaulay AL)
+        // from the previous step's multipliers, compliances and reactions,
+        // so that the later steps take one or two updates. When the
+        // stresses stop changing, the law and the contact conditions hold
+        // together.
+        const bool carries_state =
+          (contact_solver.regularisation ==
+             AugmentedLagrangianSolver::Regularisation::consistent ||
+           contact_solver.regularisation ==
+             AugmentedLagrangianSolver::Regularisation::macaulay);
+        HRAssembler<dim>              assembler(scene, spaces);
+        MaterialIteration::Operations operations;
+        bool                          first = true;
+        operations.solve                    = [&]() {
+          if (!first && carries_state)
+            {
+              const ContactIteration &last = contact_solver.result();
+              ContactStart            start;
+              start.mu              = last.mu;
+              start.alpha           = last.alpha;
+              start.p               = last.p;
+              start.tolerance_scale = last.tolerance_scale;
+              contact_solver.start_from(start);
+            }
+          first = false;
+          contact_solve();
+          if (!contact_solver.result().converged())
+            throw NotConvergedError(
+              "Material iteration, step " +
+              std::to_string(material_iteration.n_steps() + 1) +
+              ": the contact iteration did not converge: " +
+              contact_solver.outcome_message(r.free_rigid_motions));
+        };
+        operations.stresses = [&](FieldVector &s) {
+          reinit_field(s, spaces.dof_handler_stress);
+          path.stresses(s);
+        };
+        operations.linearise_at = [&](const FieldVector &s) {
+          assembler.refresh_flexibility(system, s);
+          path.flexibility_changed();
+        };
+        material_iteration.solve(operations, log);
+        r.material_steps   = material_iteration.n_steps();
+        r.material_changes = material_iteration.change_history();
+        log << "  material iteration: " << r.material_steps
+            << " Newton steps, each an augmented Lagrangian solve" << std::endl;
+      }
     r.contact = &contact_solver.result();
     // After the last multiplier update mu = w_n - g (pressed: mu = 0).
     for (unsigned int k = 0; k < nq; ++k)

@@ -24,7 +24,10 @@ namespace hrcontact
    * the compliance at zero stress.
    *
    * The iteration stops when the largest change of a stress dof is at most
-   * Relative tolerance times the largest stress; a step that leaves a
+   * Relative tolerance times the largest stress, or when three changes in a
+   * row stay below roundoff_ceiling without falling (the round-off floor of
+   * the path, above a tight tolerance: stopped_at_roundoff()); a step that
+   * leaves a
    * non-finite stress, or Maximum steps without convergence, ends the run
    * with a NotConvergedError naming the cause.
    */
@@ -69,12 +72,23 @@ namespace hrcontact
       return steps;
     }
 
-    double       relative_tolerance = 1e-10;
-    unsigned int maximum_steps      = 30;
+    /** Whether the iteration stopped at the round-off floor of the linear
+     * solves rather than at the tolerance. */
+    bool
+    stopped_at_roundoff() const
+    {
+      return roundoff_limited;
+    }
+
+    double relative_tolerance = 1e-10;
+    /** Changes below this that stop falling are round-off (see above). */
+    double       roundoff_ceiling = 1e-8;
+    unsigned int maximum_steps    = 30;
 
   private:
     std::vector<double> changes;
-    unsigned int        steps = 0;
+    unsigned int        steps            = 0;
+    bool                roundoff_limited = false;
   };
 } // namespace hrcontact
 
