@@ -6,6 +6,7 @@
 #include <hrcontact/core/run.h>
 #include <hrcontact/discretisation/displacement_stiffness.h>
 #include <hrcontact/discretisation/hr_assembler.h>
+#include <hrcontact/material/linear_elasticity.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,6 +31,7 @@ namespace hrcontact
     OutputSettings::declare_parameters(prm);
     NestedIterationSettings::declare_parameters(prm);
     MaterialIteration::declare_parameters(prm);
+    StressConstraintIteration::declare_parameters(prm);
   }
 
   template <int dim>
@@ -47,6 +49,7 @@ namespace hrcontact
     output.parse_parameters(prm);
     nested.parse_parameters(prm);
     material_iteration.parse_parameters(prm);
+    constraint_iteration.parse_parameters(prm);
     std::ostringstream text;
     prm.print_parameters(text, ParameterHandler::ShortPRM);
     parameter_text = text.str();
@@ -455,32 +458,7 @@ namespace hrcontact
                      std::vector<double>(nq, 1.),
                      p);
         };
-        r.material_steps = 0;
-        r.material_changes.clear();
-        if (scene.material->is_linear())
-          linear_solve();
-        else
-          {
-            // Newton on the complementary energy: F_c and d_c refreshed at
-            // the last stresses (on a distributed mesh each process those of
-            // its own and ghost cells, all the cells it assembles).
-            HRAssembler<dim>              assembler(scene, spaces);
-            MaterialIteration::Operations operations;
-            operations.solve    = linear_solve;
-            operations.stresses = [&](FieldVector &s) {
-              reinit_field(s, spaces.dof_handler_stress);
-              path.stresses(s);
-            };
-            operations.linearise_at = [&](const FieldVector &s) {
-              assembler.refresh_flexibility(system, s);
-              path.flexibility_changed();
-            };
-            material_iteration.solve(operations, log);
-            r.material_steps   = material_iteration.n_steps();
-            r.material_changes = material_iteration.change_history();
-            log << "  material iteration: " << r.material_steps
-                << " Newton steps" << std::endl;
-          }
+        solve_material(path, linear_solve, log);
         for (unsigned int k = 0; k < nq; ++k)
           r.contact_w[k] = system.rows[system.contact_rows[k]].value;
         return;
@@ -507,66 +485,147 @@ namespace hrcontact
         contact_solver.solve(
           system, path, load_scale, *relinearisations.front(), log);
     };
-    r.material_steps = 0;
-    r.material_changes.clear();
-    if (scene.material->is_linear())
-      contact_solve();
-    else
-      {
-        // A nonlinear law with contact: each material Newton step is a
-        // whole augmented Lagrangian solve at the compliances and strain
-        // terms of the last stresses, started (consistent and Macaulay AL)
-        // from the previous step's multipliers, compliances and reactions,
-        // so that the later steps take one or two updates. When the
-        // stresses stop changing, the law and the contact conditions hold
-        // together.
-        const bool carries_state =
-          (contact_solver.regularisation ==
-             AugmentedLagrangianSolver::Regularisation::consistent ||
-           contact_solver.regularisation ==
-             AugmentedLagrangianSolver::Regularisation::macaulay);
-        HRAssembler<dim>              assembler(scene, spaces);
-        MaterialIteration::Operations operations;
-        bool                          first = true;
-        operations.solve                    = [&]() {
-          if (!first && carries_state)
-            {
-              const ContactIteration &last = contact_solver.result();
-              ContactStart            start;
-              start.mu              = last.mu;
-              start.alpha           = last.alpha;
-              start.p               = last.p;
-              start.tolerance_scale = last.tolerance_scale;
-              contact_solver.start_from(start);
-            }
-          first = false;
-          contact_solve();
-          if (!contact_solver.result().converged())
-            throw NotConvergedError(
-              "Material iteration, step " +
-              std::to_string(material_iteration.n_steps() + 1) +
-              ": the contact iteration did not converge: " +
-              contact_solver.outcome_message(r.free_rigid_motions));
-        };
-        operations.stresses = [&](FieldVector &s) {
-          reinit_field(s, spaces.dof_handler_stress);
-          path.stresses(s);
-        };
-        operations.linearise_at = [&](const FieldVector &s) {
-          assembler.refresh_flexibility(system, s);
-          path.flexibility_changed();
-        };
-        material_iteration.solve(operations, log);
-        r.material_steps   = material_iteration.n_steps();
-        r.material_changes = material_iteration.change_history();
-        log << "  material iteration: " << r.material_steps
-            << " Newton steps, each an augmented Lagrangian solve" << std::endl;
-      }
+    // A nonlinear law or a stress constraint: each material Newton step is
+    // a whole augmented Lagrangian solve at the compliances and strain terms
+    // of the last stresses, started (consistent and Macaulay AL) from the
+    // previous step's multipliers, compliances and reactions, so that the
+    // later steps take one or two updates. When the stresses stop changing,
+    // the law and the contact conditions hold together.
+    const bool carries_state =
+      (contact_solver.regularisation ==
+         AugmentedLagrangianSolver::Regularisation::consistent ||
+       contact_solver.regularisation ==
+         AugmentedLagrangianSolver::Regularisation::macaulay);
+    bool first = true;
+    solve_material(
+      path,
+      [&]() {
+        if (!first && carries_state)
+          {
+            const ContactIteration &last = contact_solver.result();
+            ContactStart            start;
+            start.mu              = last.mu;
+            start.alpha           = last.alpha;
+            start.p               = last.p;
+            start.tolerance_scale = last.tolerance_scale;
+            contact_solver.start_from(start);
+          }
+        first = false;
+        contact_solve();
+        if (!contact_solver.result().converged() &&
+            (!scene.material->is_linear() || scene.stress_constraint))
+          throw NotConvergedError(
+            "Material iteration, step " +
+            std::to_string(material_iteration.n_steps() + 1) +
+            ": the contact iteration did not converge: " +
+            contact_solver.outcome_message(r.free_rigid_motions));
+      },
+      log);
     r.contact = &contact_solver.result();
     // After the last multiplier update mu = w_n - g (pressed: mu = 0).
     for (unsigned int k = 0; k < nq; ++k)
       r.contact_w[k] =
         system.rows[system.contact_rows[k]].value + r.contact->opening[k];
+  }
+
+  template <int dim>
+  void
+  HRProblem<dim>::solve_material(NewtonStepPath              &path,
+                                 const std::function<void()> &solve_once,
+                                 std::ostream                &log)
+  {
+    Results<dim> &r  = results_;
+    r.material_steps = 0;
+    r.material_changes.clear();
+    r.constraint_residuals.clear();
+    r.constraint_inner_steps.clear();
+    r.constraint_field     = nullptr;
+    const bool constrained = static_cast<bool>(scene.stress_constraint);
+    if (scene.material->is_linear() && !constrained)
+      {
+        solve_once();
+        return;
+      }
+    // Newton on the complementary energy: F_c and d_c refreshed at the last
+    // stresses (on a distributed mesh each process those of its own and
+    // ghost cells, all the cells it assembles).
+    HRAssembler<dim> assembler(scene, spaces);
+    if (constrained)
+      {
+        constraint_field =
+          std::make_unique<StressConstraintField<dim>>(*scene.stress_constraint,
+                                                       spaces);
+        assembler.constraint_field = constraint_field.get();
+      }
+    MaterialIteration::Operations operations;
+    operations.solve    = solve_once;
+    operations.stresses = [&](FieldVector &s) {
+      reinit_field(s, spaces.dof_handler_stress);
+      path.stresses(s);
+    };
+    operations.linearise_at = [&](const FieldVector &s) {
+      assembler.refresh_flexibility(system, s);
+      path.flexibility_changed();
+    };
+    const auto run_material_iteration = [&]() {
+      material_iteration.solve(operations, log);
+      r.material_steps += material_iteration.n_steps();
+      r.material_changes.insert(r.material_changes.end(),
+                                material_iteration.change_history().begin(),
+                                material_iteration.change_history().end());
+    };
+    if (!constrained)
+      {
+        run_material_iteration();
+        log << "  material iteration: " << r.material_steps << " Newton steps"
+            << std::endl;
+        return;
+      }
+
+    // The stress constraint's augmented Lagrangian around it, the inner
+    // tolerance following the residual (Step 2), never below the material
+    // iteration's own.
+    const double material_tolerance = material_iteration.relative_tolerance;
+    StressConstraintIteration::Operations c;
+    c.solve_material = [&](const double eps) {
+      material_iteration.relative_tolerance = std::max(eps, material_tolerance);
+      run_material_iteration();
+      material_iteration.relative_tolerance = material_tolerance;
+      const auto &changes = material_iteration.change_history();
+      // A stop at the path's round-off floor counts as converged.
+      return std::make_pair(material_iteration.n_steps(),
+                            (changes.empty() ||
+                             material_iteration.stopped_at_roundoff()) ?
+                              0. :
+                              changes.back());
+    };
+    c.stresses           = operations.stresses;
+    c.update_multipliers = [&](const FieldVector &s) {
+      return constraint_field->update_multipliers(s);
+    };
+    c.set_penalty = [&](const double alpha) {
+      constraint_field->alpha = alpha;
+    };
+    c.violation = [&](const FieldVector &s) {
+      return constraint_field->largest_violation(s);
+    };
+    c.linearise_at                       = operations.linearise_at;
+    const LinearElasticity<dim> *elastic = scene.material->elastic_part();
+    log << "  stress constraint '" << scene.stress_constraint->name() << "' at "
+        << constraint_field->quadrature().size()
+        << " vertices per cell, consistent augmented Lagrangian" << std::endl;
+    constraint_iteration.solve(c,
+                               elastic ? 1. / elastic->youngs_modulus() : 1.,
+                               log);
+    r.constraint_residuals    = constraint_iteration.residual_history();
+    r.constraint_inner_steps  = constraint_iteration.inner_step_history();
+    r.cracked_fraction        = constraint_field->cracked_fraction();
+    r.largest_fracture_strain = constraint_field->largest_opening();
+    r.constraint_field        = constraint_field.get();
+    log << "  stress constraint: " << r.constraint_residuals.size()
+        << " multiplier updates, " << r.material_steps
+        << " material Newton steps, cracked fraction " << r.cracked_fraction
+        << std::endl;
   }
 
   template <int dim>
@@ -654,12 +713,25 @@ namespace hrcontact
     summary.add("iterations", r.contact ? r.contact->history.size() : 0);
     summary.add("newton_steps", r.contact ? r.contact->total_newton_steps : 0);
     summary.add("converged", r.converged() ? "true" : "false");
-    if (!scene.material->is_linear())
+    if (!scene.material->is_linear() || scene.stress_constraint)
       {
         summary.add("material_newton_steps", r.material_steps);
         summary.add("material_stress_change",
                     r.material_changes.empty() ? 0. :
                                                  r.material_changes.back());
+      }
+    if (scene.stress_constraint)
+      {
+        summary.add("stress_constraint", scene.stress_constraint->name());
+        summary.add("stress_constraint_updates", r.constraint_residuals.size());
+        summary.add("stress_constraint_residual",
+                    r.constraint_residuals.empty() ?
+                      0. :
+                      r.constraint_residuals.back());
+        summary.add(dim == 2 ? "cracked_area_fraction" :
+                               "cracked_volume_fraction",
+                    r.cracked_fraction);
+        summary.add("largest_fracture_strain", r.largest_fracture_strain);
       }
     if (!r.coarse_levels.empty())
       {

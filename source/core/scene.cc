@@ -86,6 +86,7 @@ namespace hrcontact
     prm.leave_subsection();
 
     MaterialLawFactory<dim>::declare_parameters(prm);
+    StressConstraintFactory<dim>::declare_parameters(prm);
 
     prm.enter_subsection("Loads");
     {
@@ -135,7 +136,8 @@ namespace hrcontact
     }
     prm.leave_subsection();
 
-    material = MaterialLawFactory<dim>::create(prm, constants);
+    material          = MaterialLawFactory<dim>::create(prm, constants);
+    stress_constraint = StressConstraintFactory<dim>::create(prm);
 
     prm.enter_subsection("Loads");
     {

@@ -13,6 +13,7 @@
 #include <hrcontact/constraints/constraint_law.h>
 #include <hrcontact/constraints/constraint_source.h>
 #include <hrcontact/discretisation/hr_assembler.h>
+#include <hrcontact/discretisation/stress_constraint_field.h>
 
 #include <algorithm>
 #include <cmath>
@@ -106,8 +107,17 @@ namespace hrcontact
     // Only after a first cell, and only where F_c does not depend on the
     // position or the stresses.
     bool       reuse_blocks = false;
-    const bool may_reuse    = !stress_state && material.is_homogeneous();
-    auto       cs           = dh_s.begin_active();
+    const bool may_reuse =
+      !stress_state && !constraint_field && material.is_homogeneous();
+    // A stress constraint's term at the cell vertices (StressConstraintField).
+    std::unique_ptr<FEValues<dim>> fv_vertex;
+    FullMatrix<double>             K_vertex(n_comp, n_comp);
+    if (constraint_field)
+      fv_vertex =
+        std::make_unique<FEValues<dim>>(fe_s,
+                                        constraint_field->quadrature(),
+                                        update_values | update_JxW_values);
+    auto cs = dh_s.begin_active();
     for (const auto &cu : dh_u.active_cell_iterators())
       {
         blocks.cell = cu->active_cell_index();
@@ -138,8 +148,10 @@ namespace hrcontact
             Bc = 0;
           }
         fc = 0;
-        // A nonlinear law at a stress state: e_c = int psi : eps(sigma).
-        const bool strain_term = stress_state && !material.is_linear();
+        // A nonlinear law at a stress state, or a stress constraint: e_c =
+        // int psi : eps(sigma).
+        const bool strain_term =
+          (stress_state && !material.is_linear()) || constraint_field;
         blocks.strain_term.reinit(strain_term ? n_s : 0);
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           {
@@ -213,6 +225,50 @@ namespace hrcontact
             add_body_force(q, JxW);
           }
 
+        // The stress constraint's augmented Lagrangian term at the vertices:
+        // strain P(X) and compliance alpha DP(X), X = mu + alpha sigma
+        // (StressConstraint); nothing where X has no part in the polar cone.
+        if (constraint_field && !same)
+          {
+            const StressConstraint<dim> &constraint =
+              constraint_field->constraint;
+            const double alpha = constraint_field->alpha;
+            fv_vertex->reinit(cs);
+            for (unsigned int t = 0; t < fv_vertex->n_quadrature_points; ++t)
+              {
+                sigma_q = 0;
+                if (stress_state)
+                  for (unsigned int j = 0; j < n_s; ++j)
+                    sigma_q += (*stress_state)[ds[j]] *
+                               fv_vertex->shape_value(j, t) * T[comp_s[j]];
+                const SymmetricTensor<2, dim> X =
+                  constraint_field->multiplier(blocks.cell, t) +
+                  alpha * sigma_q;
+                const SymmetricTensor<2, dim> P = constraint.project(X);
+                if (P.norm() == 0)
+                  continue;
+                for (unsigned int c = 0; c < n_comp; ++c)
+                  for (unsigned int d = 0; d < n_comp; ++d)
+                    K_vertex(c, d) =
+                      alpha * (T[c] * constraint.project_derivative(X, T[d]));
+                const double JxW = fv_vertex->JxW(t);
+                for (unsigned int i = 0; i < n_s; ++i)
+                  {
+                    const double psi_i = fv_vertex->shape_value(i, t);
+                    if (psi_i == 0)
+                      continue;
+                    blocks.strain_term(i) += psi_i * (T[comp_s[i]] * P) * JxW;
+                    for (unsigned int j = 0; j < n_s; ++j)
+                      {
+                        const double k = K_vertex(comp_s[i], comp_s[j]);
+                        if (k != 0)
+                          Fc(i, j) +=
+                            psi_i * fv_vertex->shape_value(j, t) * k * JxW;
+                      }
+                  }
+              }
+          }
+
         for (const auto f : cu->face_indices())
           if (cu->face(f)->at_boundary())
             {
@@ -258,7 +314,7 @@ namespace hrcontact
               }
           }
         // d_c = e_c - F_c s_c (CellBlocks::strain_term).
-        if (strain_term)
+        if (strain_term && stress_state)
           for (unsigned int i = 0; i < n_s; ++i)
             for (unsigned int j = 0; j < n_s; ++j)
               blocks.strain_term(i) -= Fc(i, j) * (*stress_state)[ds[j]];
@@ -410,11 +466,12 @@ namespace hrcontact
     const Scene<dim>       &scene_  = scene;
     const MixedSpaces<dim> &spaces_ = spaces;
     system.recompute_cell_blocks =
-      [&scene_, &spaces_, state = stress_state](
+      [&scene_, &spaces_, state = stress_state, field = constraint_field](
         const std::function<bool(unsigned int)>       &filter,
         const std::function<void(const CellBlocks &)> &worker) {
         HRAssembler<dim> assembler(scene_, spaces_);
-        assembler.stress_state = state;
+        assembler.stress_state     = state;
+        assembler.constraint_field = field;
         assembler.for_each_cell(filter, worker);
       };
     const DoFHandler<dim> &dh_u = spaces.dof_handler_displacement;
@@ -456,7 +513,7 @@ namespace hrcontact
       state->update_ghost_values();
     stress_state = state;
     system.cell_strain_term.clear();
-    if (!scene.material->is_linear())
+    if (!scene.material->is_linear() || constraint_field)
       system.cell_strain_term.resize(system.n_cells());
     for_each_cell([&](const unsigned int c) { return system.is_stored(c); },
                   [&](const CellBlocks &b) {

@@ -12,12 +12,14 @@
 #include <hrcontact/discretisation/dof_partition.h>
 #include <hrcontact/discretisation/equilibrium_system.h>
 #include <hrcontact/discretisation/mixed_spaces.h>
+#include <hrcontact/discretisation/stress_constraint_field.h>
 #include <hrcontact/postprocess/postprocessor.h>
 #include <hrcontact/solvers/augmented_lagrangian_solver.h>
 #include <hrcontact/solvers/equilibrium_reduction.h>
 #include <hrcontact/solvers/material_iteration.h>
 #include <hrcontact/solvers/nested_iteration.h>
 #include <hrcontact/solvers/newton_step.h>
+#include <hrcontact/solvers/stress_constraint_iteration.h>
 
 #include <memory>
 #include <ostream>
@@ -101,6 +103,17 @@ namespace hrcontact
     /** The contact iteration (or the one solve without contact). */
     void
     solve_on_path(NewtonStepPath &path, std::ostream &log);
+    /**
+     * Runs `solve_once` (one linear or contact solve at the current
+     * linearisation) as the scene's material needs: once for a linear law;
+     * under the material Newton iteration for a nonlinear one; under the
+     * stress constraint's augmented Lagrangian, each inner solve a material
+     * iteration, for Material/Admissible stresses.
+     */
+    void
+    solve_material(NewtonStepPath              &path,
+                   const std::function<void()> &solve_once,
+                   std::ostream                &log);
     /** Stresses, displacements and reactions from the path's last solve. */
     void
     collect_fields(const NewtonStepPath &path);
@@ -143,7 +156,11 @@ namespace hrcontact
     /** Newton's method on a nonlinear law's complementary energy (unused
      * for a linear one). */
     MaterialIteration material_iteration;
-    EquilibriumSystem system;
+    /** The augmented Lagrangian of Material/Admissible stresses, and its
+     * multipliers (null without a constraint). */
+    StressConstraintIteration                   constraint_iteration;
+    std::unique_ptr<StressConstraintField<dim>> constraint_field;
+    EquilibriumSystem                           system;
     /** The p4est partition of the displacement dofs and cells. */
     DofPartition        partition;
     Results<dim>        results_;

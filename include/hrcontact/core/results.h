@@ -21,6 +21,8 @@
 namespace hrcontact
 {
   class EquilibriumReduction;
+  template <int dim>
+  class StressConstraintField;
 
   /**
    * What a run leaves behind, read-only for postprocessors and tests
@@ -131,6 +133,18 @@ namespace hrcontact
      */
     unsigned int        material_steps = 0;
     std::vector<double> material_changes;
+    /**
+     * A stress constraint (Material/Admissible stresses,
+     * StressConstraintIteration): the multiplier updates, the relative
+     * residual after each, the material Newton steps of each inner solve,
+     * the area (volume) fraction of cracked vertex points, the largest
+     * fracture strain, and the state itself (for output), null without one.
+     */
+    std::vector<double>               constraint_residuals;
+    std::vector<unsigned int>         constraint_inner_steps;
+    double                            cracked_fraction        = 0;
+    double                            largest_fracture_strain = 0;
+    const StressConstraintField<dim> *constraint_field        = nullptr;
     /** Wall time of the run's sections so far (for summary.txt). */
     double wall_time = 0;
 

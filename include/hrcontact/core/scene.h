@@ -12,6 +12,7 @@
 #include <hrcontact/geometry/mesh_generator.h>
 #include <hrcontact/geometry/tunnel_lining.h>
 #include <hrcontact/material/material_law.h>
+#include <hrcontact/material/stress_constraint.h>
 
 #include <map>
 #include <memory>
@@ -61,6 +62,9 @@ namespace hrcontact
 
     /** The material law (Material/Model), read with the scene. */
     std::shared_ptr<const MaterialLaw<dim>> material;
+    /** The cone of admissible stresses (Material/Admissible stresses), or
+     * null: any stress. */
+    std::shared_ptr<const StressConstraint<dim>> stress_constraint;
 
     // Loads
     std::unique_ptr<dealii::FunctionParser<dim>> body_force;

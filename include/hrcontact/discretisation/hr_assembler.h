@@ -13,6 +13,9 @@
 
 namespace hrcontact
 {
+  template <int dim>
+  class StressConstraintField;
+
   /**
    * Assembles the Hellinger-Reissner blocks (section 4.2): the flexibility F,
    * the equilibrium matrix B, the loads f from body force and tractions, and
@@ -73,6 +76,13 @@ namespace hrcontact
     void
     refresh_flexibility(EquilibriumSystem            &system,
                         const dealii::Vector<double> &stress);
+
+    /**
+     * The augmented Lagrangian state of the scene's stress constraint
+     * (Material/Admissible stresses), if any: refresh_flexibility then adds
+     * its term at the cell vertices to F_c and d_c. Owned by the caller.
+     */
+    const StressConstraintField<dim> *constraint_field = nullptr;
 
   private:
     const Scene<dim>       &scene;

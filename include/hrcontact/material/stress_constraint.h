@@ -1,0 +1,101 @@
+#ifndef hrcontact_stress_constraint_h
+#define hrcontact_stress_constraint_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hrcontact
+{
+  /**
+   * A convex cone K of admissible stresses (Material/Admissible stresses),
+   * imposed on top of the material law: no tension (sigma negative
+   * semidefinite, masonry) or no compression (positive semidefinite,
+   * membranes). Its multipliers are inelastic strains in the polar cone (the
+   * fracture, crack-opening, strains of a no-tension body), and it is
+   * regularised by the paper's consistent augmented Lagrangian (eq. 25-26)
+   * with the scalar max() replaced by the projection onto that polar cone:
+   * at a point with multiplier mu and penalty alpha (a compliance) the
+   * complementary energy gains
+   *
+   *   (|P(mu + alpha sigma)|^2 - |mu|^2) / (2 alpha),
+   *
+   * C^1 and convex in sigma, whose gradient P(mu + alpha sigma) adds to the
+   * strain and whose Hessian alpha DP adds to the compliance; the
+   * multiplier update (eq. 48) is mu <- P(mu + alpha sigma). At the fixed
+   * point mu = P(mu + alpha sigma): mu in the polar cone, sigma in K and
+   * mu : sigma = 0 (doc/materials.md).
+   *
+   * Each cone registers itself by name with StressConstraintFactory.
+   */
+  template <int dim>
+  class StressConstraint
+  {
+  public:
+    virtual ~StressConstraint() = default;
+
+    /** The name Material/Admissible stresses gives it. */
+    virtual std::string
+    name() const = 0;
+
+    /** P(X): the projection of X onto the cone of multipliers. */
+    virtual dealii::SymmetricTensor<2, dim>
+    project(const dealii::SymmetricTensor<2, dim> &X) const = 0;
+
+    /**
+     * DP(X)[H]: the derivative of the projection at X in the direction H
+     * (symmetric, between 0 and the identity: the added compliance is
+     * positive semidefinite).
+     */
+    virtual dealii::SymmetricTensor<2, dim>
+    project_derivative(const dealii::SymmetricTensor<2, dim> &X,
+                       const dealii::SymmetricTensor<2, dim> &H) const = 0;
+
+    /**
+     * How far sigma is from K: the largest principal stress of the wrong
+     * sign (0 inside K), in stress units.
+     */
+    virtual double
+    violation(const dealii::SymmetricTensor<2, dim> &sigma) const = 0;
+
+    /** The size of a multiplier: its largest principal value in magnitude. */
+    virtual double
+    opening(const dealii::SymmetricTensor<2, dim> &mu) const = 0;
+  };
+
+  /**
+   * The name -> factory registry of stress constraints and the entry
+   * Material/Admissible stresses ("any": none, the default).
+   */
+  template <int dim>
+  class StressConstraintFactory
+  {
+  public:
+    using Factory = std::function<std::unique_ptr<StressConstraint<dim>>()>;
+
+    static bool
+    register_constraint(const std::string &name, const Factory &factory);
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /** The constraint the entry names, or null for "any". */
+    static std::unique_ptr<StressConstraint<dim>>
+    create(dealii::ParameterHandler &prm);
+
+  private:
+    struct Entry
+    {
+      std::string name;
+      Factory     factory;
+    };
+    static std::vector<Entry> &
+    registry();
+  };
+} // namespace hrcontact
+
+#endif

@@ -1,0 +1,142 @@
+#include <hrcontact/core/input.h>
+#include <hrcontact/solvers/stress_constraint_iteration.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  void
+  StressConstraintIteration::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Stress constraint iteration");
+    prm.declare_entry(
+      "Initial penalty",
+      "100",
+      Patterns::Double(0),
+      "The augmented Lagrangian's penalty alpha of Material/Admissible "
+      "stresses, in units of the elastic compliance 1/E: where a point is "
+      "cracked its compliance grows by alpha. Larger takes fewer multiplier "
+      "updates and worse conditioned solves (doc/materials.md measures "
+      "it). Grown tenfold when an update does not cut the residual by 4 "
+      "(eq. 49).");
+    prm.declare_entry("Relative tolerance",
+                      "1e-10",
+                      Patterns::Double(0),
+                      "Stop when the largest change of a multiplier over "
+                      "alpha (a stress) is at most this times the largest "
+                      "stress.");
+    prm.declare_entry("Maximum updates",
+                      "50",
+                      Patterns::Integer(1),
+                      "Multiplier updates before the run stops as not "
+                      "converged.");
+    prm.declare_entry(
+      "Maximum penalty",
+      "1e8",
+      Patterns::Double(1),
+      "The penalty may grow to this times its initial value; beyond, the "
+      "load is taken as one no admissible stress field carries (e.g. "
+      "tension on a no-tension body) and the run stops.");
+    prm.leave_subsection();
+  }
+
+  void
+  StressConstraintIteration::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Stress constraint iteration");
+    initial_penalty    = prm.get_double("Initial penalty");
+    relative_tolerance = prm.get_double("Relative tolerance");
+    maximum_updates    = prm.get_integer("Maximum updates");
+    maximum_penalty    = prm.get_double("Maximum penalty");
+    prm.leave_subsection();
+    if (!(initial_penalty > 0))
+      throw InputError("Stress constraint iteration/Initial penalty must be "
+                       "positive.");
+    if (!(relative_tolerance > 0))
+      throw InputError("Stress constraint iteration/Relative tolerance must "
+                       "be positive (0 would never stop).");
+  }
+
+  void
+  StressConstraintIteration::solve(const Operations &operations,
+                                   const double      compliance,
+                                   std::ostream     &log)
+  {
+    residuals.clear();
+    penalties.clear();
+    inner_steps.clear();
+    double alpha = initial_penalty * compliance;
+    operations.set_penalty(alpha);
+    // Step 1-2: the first inner solve, from the elastic one.
+    double eps   = std::max(relative_tolerance, 1e-2);
+    auto   inner = operations.solve_material(eps);
+    inner_steps.push_back(inner.first);
+    FieldVector stress;
+    while (true)
+      {
+        operations.stresses(stress);
+        const double scale = std::max(stress.linfty_norm(), 1e-300);
+        // Step 4 (the violation before the multipliers move).
+        const double violation = operations.violation(stress);
+        const double residual  = operations.update_multipliers(stress) / scale;
+        residuals.push_back(residual);
+        penalties.push_back(alpha);
+        log << "    constraint update " << std::setw(3) << residuals.size()
+            << ": material steps " << std::setw(2) << inner_steps.back()
+            << ", residual " << std::scientific << std::setprecision(3)
+            << residual << ", largest violation " << violation / scale
+            << ", alpha E " << alpha / compliance << std::defaultfloat
+            << std::setprecision(6) << std::endl;
+        if (!std::isfinite(residual))
+          throw NotConvergedError(
+            "Stress constraint iteration: non-finite stresses at update " +
+            std::to_string(residuals.size()) + ".");
+        // Step 6.
+        if (residual <= relative_tolerance &&
+            inner.second <= relative_tolerance)
+          return;
+        if (residuals.size() >= maximum_updates)
+          {
+            std::ostringstream s;
+            s << "Stress constraint iteration: no convergence in "
+              << maximum_updates << " multiplier updates (residual "
+              << std::setprecision(3) << residual << " of the largest stress, "
+              << "largest violation " << violation / scale
+              << "). If the violation does not fall, the load needs stresses "
+                 "the material cannot carry; else raise Stress constraint "
+                 "iteration/Maximum updates.";
+            throw NotConvergedError(s.str());
+          }
+        // Step 5 (eq. 49).
+        const unsigned int n = residuals.size();
+        if (n >= 2 && residual > 0.25 * residuals[n - 2])
+          {
+            alpha *= 10;
+            if (alpha > maximum_penalty * initial_penalty * compliance)
+              {
+                std::ostringstream s;
+                s << "Material/Admissible stresses: no admissible stress "
+                     "field carries this load: after "
+                  << n << " multiplier updates the penalty passed "
+                  << "Stress constraint iteration/Maximum penalty and the "
+                  << "stresses still leave the cone by " << std::setprecision(3)
+                  << violation / scale
+                  << " of the largest stress (e.g. tension that only the "
+                     "material's tensile strength could carry).";
+                throw NotConvergedError(s.str());
+              }
+            operations.set_penalty(alpha);
+          }
+        // Step 2: the inner tolerance follows the residual.
+        eps = std::max(relative_tolerance, std::min(eps, residual * residual));
+        operations.linearise_at(stress);
+        inner = operations.solve_material(eps);
+        inner_steps.push_back(inner.first);
+      }
+  }
+} // namespace hrcontact

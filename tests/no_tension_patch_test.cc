@@ -1,0 +1,178 @@
+// Material/Admissible stresses on homogeneous states (issue 18): a body of
+// distorted cells under u = eps x on its whole boundary, linear elastic
+// law, E = 1000, nu = 0.3. Where eps stretches one principal direction and
+// compresses the others (eps_1 + nu eps_2 > 0 in plane stress), the
+// no-tension stress is uniaxial, sigma = E eps_2 n_2 n_2 (0 across the
+// crack), the fracture strain mu = (eps_1 + nu eps_2) n_1 n_1: the consistent
+// augmented Lagrangian at the cell vertices must give it to 1e-10, whatever
+// the crack's direction (0 and 30 degrees), and the mirror image under "no
+// compression". A strain that needs no tension gives the linear elastic
+// answer to 1e-10 with nothing cracked; 3D likewise. A traction that only
+// tension could carry stops with the named error.
+
+#include <deal.II/base/point.h>
+
+#include <hrcontact/core/input.h>
+#include <hrcontact/postprocess/field_values.h>
+
+#include "tests.h"
+
+using namespace hrcontact_tests;
+
+namespace
+{
+  const double E = 1000, nu = 0.3;
+
+  template <int dim>
+  std::string
+  patch(const std::string &constraint, const double eps[3][3])
+  {
+    std::ostringstream t;
+    t << std::setprecision(17) << "set Dimension = " << dim
+      << "\nsubsection Geometry\n"
+         "  set Grid generator = subdivided_hyper_cube\n"
+         "  set Grid arguments = 4 : 0 : 1 : true\n"
+         "  set Distortion = 0.3\n"
+         "end\n"
+         "subsection Material\n"
+         "  set Young's modulus = 1000\n"
+         "  set Poisson's ratio = 0.3\n"
+      << (dim == 2 ? "  set Plane condition = plane stress\n" : "")
+      << "  set Admissible stresses = " << constraint
+      << "\nend\nsubsection Output\n  set Write solution = false\n"
+         "  set Output directory = results\nend\n"
+         "subsection Supports\n  set Prescribed displacements = ";
+    for (unsigned int id = 0; id < 2 * dim; ++id)
+      {
+        t << (id ? " | " : "") << id << ": ";
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            t << (i ? "; " : "");
+            for (unsigned int j = 0; j < dim; ++j)
+              t << (j ? " + " : "") << "(" << eps[i][j] << ")*"
+                << "xyz"[j];
+          }
+      }
+    t << "\nend\n";
+    return t.str();
+  }
+
+  template <int dim>
+  void
+  report(const std::string &name,
+         const std::string &constraint,
+         const double       eps[3][3],
+         const double       sigma[3][3],
+         const double       cracked)
+  {
+    const auto  problem = solve_from_text<dim>(patch<dim>(constraint, eps));
+    const auto &r       = problem->results();
+    std::ostringstream reference;
+    reference << std::setprecision(17);
+    for (unsigned int c = 0;
+         c < hrcontact::MixedSpaces<dim>::n_stress_components;
+         ++c)
+      {
+        const auto ab =
+          hrcontact::MixedSpaces<dim>::stress_component_indices(c);
+        reference << (c ? "; " : "") << sigma[ab.first][ab.second];
+      }
+    const auto exact = hrcontact::make_function<dim>(
+      reference.str(),
+      hrcontact::MixedSpaces<dim>::n_stress_components,
+      {},
+      "reference");
+    const auto [max_err, l2_err] =
+      hrcontact::stress_error(r.spaces, r.stress, *exact);
+    std::cout << "  " << name << " ('" << constraint
+              << "'): converged in at most 20 updates: "
+              << (r.constraint_residuals.size() <= 20 ? "yes" : "NO")
+              << ", last residual < 1e-10: "
+              << check(r.constraint_residuals.back(), 1e-10)
+              << "\n    stresses against the closed form, max < 1e-10: "
+              << check(max_err, 1e-10)
+              << ", L2 < 1e-10: " << check(l2_err, 1e-10)
+              << "\n    cracked fraction " << r.cracked_fraction
+              << " (expected " << cracked << ")" << std::endl;
+  }
+
+  /** eps = R diag(e1, e2) R^T, R the rotation by `degrees`. */
+  void
+  rotated(const double e1,
+          const double e2,
+          const double degrees,
+          double       t[3][3])
+  {
+    const double a = degrees * M_PI / 180, c = std::cos(a), s = std::sin(a);
+    t[0][0] = c * c * e1 + s * s * e2;
+    t[1][1] = s * s * e1 + c * c * e2;
+    t[0][1] = t[1][0] = c * s * (e1 - e2);
+    t[0][2] = t[2][0] = t[1][2] = t[2][1] = t[2][2] = 0;
+  }
+} // namespace
+
+int
+main()
+{
+  std::cout << std::setprecision(6);
+  std::cout << "2D, plane stress\n";
+  for (const double degrees : {0., 30.})
+    {
+      // Stretched along n_1, compressed along n_2: eps_1 + nu eps_2 > 0.
+      const double e1 = 1e-3, e2 = -2e-3;
+      double       eps[3][3], sigma[3][3];
+      rotated(e1, e2, degrees, eps);
+      rotated(0, E * e2, degrees, sigma);
+      report<2>("crack at " + std::to_string(int(degrees)) + " degrees",
+                "no tension",
+                eps,
+                sigma,
+                1);
+      // The mirror image: no compression, a wrinkle along n_1.
+      double meps[3][3], msigma[3][3];
+      rotated(-e1, -e2, degrees, meps);
+      rotated(0, -E * e2, degrees, msigma);
+      report<2>("wrinkle at " + std::to_string(int(degrees)) + " degrees",
+                "no compression",
+                meps,
+                msigma,
+                1);
+    }
+  {
+    // Compressed both ways: the linear elastic (plane stress) answer.
+    double eps[3][3], sigma[3][3];
+    rotated(-1e-3, -2e-3, 30, eps);
+    rotated(E / (1 - nu * nu) * (-1e-3 + nu * -2e-3),
+            E / (1 - nu * nu) * (-2e-3 + nu * -1e-3),
+            30,
+            sigma);
+    report<2>("compressed both ways", "no tension", eps, sigma, 0);
+  }
+
+  std::cout << "3D\n";
+  {
+    // Stretched along x, compressed along y and z: sigma_xx = 0 and the
+    // plane-stress answer in y, z; mu_xx = eps_xx + nu (s_yy + s_zz)/E > 0.
+    double       eps[3][3] = {{2e-3, 0, 0}, {0, -2e-3, 0}, {0, 0, -1e-3}};
+    const double s_yy      = E / (1 - nu * nu) * (eps[1][1] + nu * eps[2][2]),
+                 s_zz      = E / (1 - nu * nu) * (eps[2][2] + nu * eps[1][1]);
+    double sigma[3][3]     = {{0, 0, 0}, {0, s_yy, 0}, {0, 0, s_zz}};
+    report<3>("crack across x", "no tension", eps, sigma, 1);
+  }
+
+  std::cout << "A traction that needs tension:\n";
+  try
+    {
+      double      eps[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+      std::string text      = patch<2>("no tension", eps);
+      text += "subsection Supports\n"
+              "  set Prescribed displacements = 0 x: 0 | 2 y: 0\nend\n"
+              "subsection Loads\n  set Tractions = 1: 1; 0\nend\n";
+      solve_from_text<2>(text);
+      std::cout << "  NOT refused\n";
+    }
+  catch (const hrcontact::NotConvergedError &e)
+    {
+      std::cout << "  " << e.what() << '\n';
+    }
+}
