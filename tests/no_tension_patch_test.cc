@@ -6,7 +6,8 @@
 // crack), the fracture strain mu = (eps_1 + nu eps_2) n_1 n_1: the consistent
 // augmented Lagrangian at the cell vertices must give it to 1e-10, whatever
 // the crack's direction (0 and 30 degrees), and the mirror image under "no
-// compression". A strain that needs no tension gives the linear elastic
+// compression", and with the cone at the Gauss points. A strain that needs
+// no tension gives the linear elastic
 // answer to 1e-10 with nothing cracked; 3D likewise. A traction that only
 // tension could carry stops with the named error.
 
@@ -25,7 +26,9 @@ namespace
 
   template <int dim>
   std::string
-  patch(const std::string &constraint, const double eps[3][3])
+  patch(const std::string &constraint,
+        const double       eps[3][3],
+        const std::string &extra = "")
   {
     std::ostringstream t;
     t << std::setprecision(17) << "set Dimension = " << dim
@@ -53,7 +56,7 @@ namespace
                 << "xyz"[j];
           }
       }
-    t << "\nend\n";
+    t << "\nend\n" << extra;
     return t.str();
   }
 
@@ -63,10 +66,12 @@ namespace
          const std::string &constraint,
          const double       eps[3][3],
          const double       sigma[3][3],
-         const double       cracked)
+         const double       cracked,
+         const std::string &extra = "")
   {
-    const auto  problem = solve_from_text<dim>(patch<dim>(constraint, eps));
-    const auto &r       = problem->results();
+    const auto problem =
+      solve_from_text<dim>(patch<dim>(constraint, eps, extra));
+    const auto        &r = problem->results();
     std::ostringstream reference;
     reference << std::setprecision(17);
     for (unsigned int c = 0;
@@ -138,6 +143,19 @@ main()
                 msigma,
                 1);
     }
+  {
+    // The cone imposed at the Gauss points instead of the vertices.
+    double eps[3][3], sigma[3][3];
+    rotated(1e-3, -2e-3, 30, eps);
+    rotated(0, E * -2e-3, 30, sigma);
+    report<2>("crack at 30 degrees, Gauss points",
+              "no tension",
+              eps,
+              sigma,
+              1,
+              "subsection Stress constraint iteration\n"
+              "  set Constraint points = Gauss points\nend\n");
+  }
   {
     // Compressed both ways: the linear elastic (plane stress) answer.
     double eps[3][3], sigma[3][3];

@@ -552,9 +552,14 @@ namespace hrcontact
     HRAssembler<dim> assembler(scene, spaces);
     if (constrained)
       {
-        constraint_field =
-          std::make_unique<StressConstraintField<dim>>(*scene.stress_constraint,
-                                                       spaces);
+        constraint_field = std::make_unique<StressConstraintField<dim>>(
+          *scene.stress_constraint,
+          spaces,
+          constraint_iteration.constraint_points == "vertices" ?
+            StressConstraintField<dim>::Points::vertices :
+          constraint_iteration.constraint_points == "Gauss points" ?
+            StressConstraintField<dim>::Points::gauss_points :
+            StressConstraintField<dim>::Points::cell_centres);
         assembler.constraint_field = constraint_field.get();
       }
     MaterialIteration::Operations operations;
@@ -582,6 +587,14 @@ namespace hrcontact
         return;
       }
 
+    // The semismooth constraint term can make full Newton steps cycle: an
+    // exact line search on the complementary energy damps them.
+    operations.energy_slope = [&](const FieldVector &s0,
+                                  const FieldVector &delta,
+                                  const double       theta,
+                                  double            *curvature) {
+      return assembler.energy_slope(s0, delta, theta, curvature);
+    };
     // The stress constraint's augmented Lagrangian around it, the inner
     // tolerance following the residual (Step 2), never below the material
     // iteration's own.
@@ -612,8 +625,9 @@ namespace hrcontact
     c.linearise_at                       = operations.linearise_at;
     const LinearElasticity<dim> *elastic = scene.material->elastic_part();
     log << "  stress constraint '" << scene.stress_constraint->name() << "' at "
-        << constraint_field->quadrature().size()
-        << " vertices per cell, consistent augmented Lagrangian" << std::endl;
+        << constraint_field->quadrature().size() << " point(s) per cell ("
+        << constraint_iteration.constraint_points
+        << "), consistent augmented Lagrangian" << std::endl;
     constraint_iteration.solve(c,
                                elastic ? 1. / elastic->youngs_modulus() : 1.,
                                log);

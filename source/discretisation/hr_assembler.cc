@@ -526,6 +526,95 @@ namespace hrcontact
   }
 
   template <int dim>
+  double
+  HRAssembler<dim>::energy_slope(const FieldVector &s0,
+                                 const FieldVector &delta,
+                                 const double       theta,
+                                 double            *curvature) const
+  {
+    const auto             &fe_s     = *spaces.fe_stress;
+    constexpr unsigned int  n_comp   = MixedSpaces<dim>::n_stress_components;
+    const MaterialLaw<dim> &material = *scene.material;
+    const QGauss<dim>       quadrature(2);
+    FEValues<dim>           fv(fe_s,
+                     quadrature,
+                     update_values | update_quadrature_points |
+                       update_JxW_values);
+    std::unique_ptr<FEValues<dim>> fv_vertex;
+    if (constraint_field)
+      fv_vertex =
+        std::make_unique<FEValues<dim>>(fe_s,
+                                        constraint_field->quadrature(),
+                                        update_values | update_JxW_values);
+    const unsigned int                   n_s = fe_s.n_dofs_per_cell();
+    std::vector<types::global_dof_index> ds(n_s);
+    std::vector<SymmetricTensor<2, dim>> T(n_comp);
+    for (unsigned int c = 0; c < n_comp; ++c)
+      T[c] = MixedSpaces<dim>::stress_basis_tensor(c);
+    std::vector<unsigned int> comp(n_s);
+    for (unsigned int j = 0; j < n_s; ++j)
+      comp[j] = fe_s.system_to_component_index(j).first;
+    // sigma(theta) and delta sigma at point q of the values in `v`.
+    const auto at = [&](const FEValues<dim> &v, const unsigned int q) {
+      SymmetricTensor<2, dim> base, step;
+      for (unsigned int j = 0; j < n_s; ++j)
+        {
+          const double psi = v.shape_value(j, q);
+          if (psi == 0)
+            continue;
+          base += s0[ds[j]] * psi * T[comp[j]];
+          step += delta[ds[j]] * psi * T[comp[j]];
+        }
+      return std::make_pair(base, step);
+    };
+    double slope = 0, second = 0;
+    for (const auto &cell : spaces.dof_handler_stress.active_cell_iterators())
+      {
+        if (!cell->is_locally_owned())
+          continue;
+        cell->get_dof_indices(ds);
+        fv.reinit(cell);
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          {
+            const auto [sigma0, dsigma] = at(fv, q);
+            const Point<dim> &x         = fv.quadrature_point(q);
+            slope += (material.strain(sigma0 + theta * dsigma, x) * dsigma) *
+                     fv.JxW(q);
+            if (curvature)
+              second +=
+                (material.compliance_times(sigma0, dsigma, x) * dsigma) *
+                fv.JxW(q);
+          }
+        if (!constraint_field)
+          continue;
+        const StressConstraint<dim> &constraint = constraint_field->constraint;
+        const double                 alpha      = constraint_field->alpha;
+        fv_vertex->reinit(cell);
+        for (unsigned int t = 0; t < fv_vertex->n_quadrature_points; ++t)
+          {
+            const auto [sigma0, dsigma] = at(*fv_vertex, t);
+            const SymmetricTensor<2, dim> &mu =
+              constraint_field->multiplier(cell->active_cell_index(), t);
+            slope +=
+              (constraint.project(mu + alpha * (sigma0 + theta * dsigma)) *
+               dsigma) *
+              fv_vertex->JxW(t);
+            if (curvature)
+              second +=
+                alpha *
+                (constraint.project_derivative(mu + alpha * sigma0, dsigma) *
+                 dsigma) *
+                fv_vertex->JxW(t);
+          }
+      }
+    const MPI_Comm comm =
+      spaces.dof_handler_stress.get_triangulation().get_communicator();
+    if (curvature)
+      *curvature = Utilities::MPI::sum(second, comm);
+    return Utilities::MPI::sum(slope, comm);
+  }
+
+  template <int dim>
   void
   HRAssembler<dim>::classify_rows(EquilibriumSystem &system,
                                   const bool         lean_rows) const

@@ -66,10 +66,13 @@ namespace hrcontact
   template <int dim>
   StressConstraintField<dim>::StressConstraintField(
     const StressConstraint<dim> &constraint,
-    const MixedSpaces<dim>      &spaces)
+    const MixedSpaces<dim>      &spaces,
+    const Points                 points)
     : constraint(constraint)
     , spaces(spaces)
-    , rule()
+    , rule(points == Points::vertices     ? Quadrature<dim>(QTrapezoid<dim>()) :
+           points == Points::gauss_points ? Quadrature<dim>(QGauss<dim>(2)) :
+                                            Quadrature<dim>(QGauss<dim>(1)))
   {
     const unsigned int n =
       spaces.dof_handler_stress.get_triangulation().n_active_cells() *
@@ -129,6 +132,21 @@ namespace hrcontact
                             v = std::max(v, constraint.violation(sigma));
                         });
     return Utilities::MPI::max(v, communicator(spaces));
+  }
+
+  template <int dim>
+  double
+  StressConstraintField<dim>::opening_at(const Point<dim> &point) const
+  {
+    const auto &tria = spaces.dof_handler_stress.get_triangulation();
+    double      m    = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->point_inside(point))
+        for (unsigned int t = 0; t < rule.size(); ++t)
+          m = std::max(m,
+                       constraint.opening(
+                         mu[cell->active_cell_index() * rule.size() + t]));
+    return Utilities::MPI::max(m, communicator(spaces));
   }
 
   template <int dim>

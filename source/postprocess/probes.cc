@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <hrcontact/discretisation/stress_constraint_field.h>
 #include <hrcontact/postprocess/field_values.h>
 #include <hrcontact/postprocess/probes.h>
 
@@ -115,6 +116,20 @@ namespace hrcontact
         log << "    " << std::left << std::setw(20) << probe.name << std::right
             << std::setw(8) << probe.quantity << " = " << std::setw(14)
             << std::setprecision(6) << value;
+        // Where cracks open the displacements are not unique (eq. 50-51
+        // recover one compatible choice): say so next to such a probe.
+        if (results.constraint_field && probe.quantity[0] == 'u')
+          {
+            const auto  &field   = *results.constraint_field;
+            const double largest = field.largest_opening();
+            const bool   cracked =
+              largest > 0 && field.opening_at(probe.point) > 1e-2 * largest;
+            summary.add("probe_in_cracked_region." + probe.name,
+                        cracked ? "true" : "false");
+            if (cracked)
+              log << "   (in a cracked region: displacements there are not "
+                     "unique, doc/materials.md)";
+          }
         for (const auto &[name, ref] : reference_values)
           if (name == probe.name)
             {

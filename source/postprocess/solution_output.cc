@@ -3,6 +3,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <hrcontact/discretisation/stress_constraint_field.h>
 #include <hrcontact/postprocess/field_values.h>
 #include <hrcontact/postprocess/solution_output.h>
 
@@ -67,6 +68,14 @@ namespace hrcontact
             for (unsigned int d = 0; d < dim; ++d)
               out[k++] = ev[d];
             out[k++] = von_mises<dim>(sigma, scene.out_of_plane_stress(sigma));
+            // The directions of the largest and the smallest principal
+            // stress (for a no-tension body: the crack normal and the
+            // strut), as vectors for ParaView's glyphs.
+            const auto e =
+              eigenvectors(sigma, SymmetricTensorEigenvectorMethod::jacobi);
+            for (const unsigned int d : {0u, dim - 1u})
+              for (unsigned int a = 0; a < dim; ++a)
+                out[k++] = e[d].second[a];
             for (unsigned int c = 0; c < MixedSpaces<dim>::n_stress_components;
                  ++c)
               out[k++] = inputs.solution_values[q][c];
@@ -80,6 +89,10 @@ namespace hrcontact
         for (unsigned int d = 0; d < dim; ++d)
           names.push_back("principal_stress_" + std::to_string(d + 1));
         names.push_back("von_mises");
+        for (unsigned int a = 0; a < dim; ++a)
+          names.push_back("principal_direction_1");
+        for (unsigned int a = 0; a < dim; ++a)
+          names.push_back("principal_direction_" + std::to_string(dim));
         for (unsigned int c = 0; c < MixedSpaces<dim>::n_stress_components; ++c)
           names.push_back(MixedSpaces<dim>::stress_component_name(c));
         return names;
@@ -92,7 +105,12 @@ namespace hrcontact
           interpretation(
             dim * dim,
             DataComponentInterpretation::component_is_part_of_tensor);
-        interpretation.resize(dim * dim + dim + 1 +
+        interpretation.resize(dim * dim + dim + 1,
+                              DataComponentInterpretation::component_is_scalar);
+        interpretation.resize(
+          dim * dim + dim + 1 + 2 * dim,
+          DataComponentInterpretation::component_is_part_of_vector);
+        interpretation.resize(dim * dim + dim + 1 + 2 * dim +
                                 MixedSpaces<dim>::n_stress_components,
                               DataComponentInterpretation::component_is_scalar);
         return interpretation;
@@ -148,6 +166,14 @@ namespace hrcontact
       subdomain = partition.process;
       if (partition.distributed())
         data_out.add_data_vector(subdomain, "subdomain");
+      // A stress constraint: the largest fracture (crack-opening) strain of
+      // each cell's constraint points, per cell.
+      Vector<float> fracture;
+      if (results.constraint_field)
+        {
+          fracture = results.constraint_field->cell_openings();
+          data_out.add_data_vector(fracture, "fracture_strain");
+        }
       data_out.build_patches();
       if (!partition.distributed())
         {

@@ -24,7 +24,7 @@ namespace hrcontact
       "the change falls quadratically: 1e-10 costs one step more than "
       "1e-5). Not used by a linear law.");
     prm.declare_entry("Maximum steps",
-                      "30",
+                      "100",
                       Patterns::Integer(1),
                       "Newton steps of the material iteration before the run "
                       "stops as not converged (each step is one linear "
@@ -110,6 +110,54 @@ namespace hrcontact
               << "). Raise Material iteration/Maximum steps, or check that "
                  "the load is one the material can carry.";
             throw NotConvergedError(s.str());
+          }
+        if (steps > 1 && operations.energy_slope)
+          {
+            // The exact line search along delta = current - previous.
+            FieldVector delta;
+            delta.reinit(current, true);
+            delta.copy_locally_owned_data_from(current);
+            delta.add(-1., previous);
+            double       curvature = 0;
+            const double slope_0 =
+              operations.energy_slope(previous, delta, 0., &curvature);
+            const auto derivative = [&](const double theta) {
+              return operations.energy_slope(previous, delta, theta, nullptr) -
+                     slope_0 - curvature;
+            };
+            double       a = 0, fa = -curvature, b = 1, fb = derivative(1.);
+            double       theta = 1;
+            const double stop  = 1e-3 * std::abs(curvature);
+            if (fb > stop)
+              {
+                // Regula falsi (Illinois) on the increasing derivative.
+                int side = 0;
+                for (unsigned int k = 0; k < 30; ++k)
+                  {
+                    theta           = (a * fb - b * fa) / (fb - fa);
+                    const double ft = derivative(theta);
+                    if (std::abs(ft) <= stop)
+                      break;
+                    if (ft > 0)
+                      {
+                        b = theta, fb = ft;
+                        if (side == -1)
+                          fa /= 2;
+                        side = -1;
+                      }
+                    else
+                      {
+                        a = theta, fa = ft;
+                        if (side == 1)
+                          fb /= 2;
+                        side = 1;
+                      }
+                  }
+                log << "    line search: step " << std::setprecision(3) << theta
+                    << std::setprecision(6) << std::endl;
+                current.sadd(theta, 1 - theta, previous);
+                current.update_ghost_values();
+              }
           }
         operations.linearise_at(current);
         previous.reinit(current, true);

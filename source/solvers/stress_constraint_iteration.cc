@@ -42,6 +42,18 @@ namespace hrcontact
       "The penalty may grow to this times its initial value; beyond, the "
       "load is taken as one no admissible stress field carries (e.g. "
       "tension on a no-tension body) and the run stops.");
+    prm.declare_entry(
+      "Constraint points",
+      "vertices",
+      Patterns::Selection("vertices|Gauss points|cell centres"),
+      "Where the cone is imposed. vertices: the DGQ1 stress dofs, so the "
+      "whole bilinear stress field of each cell is admissible (exact on "
+      "homogeneous states; near free edges and crack fronts no finite "
+      "fracture strains may exist and the iteration then stalls). Gauss "
+      "points: the 2^dim Gauss points, alike. cell centres: one point per "
+      "cell, which converges where the others stall but leaves the "
+      "bilinear stress modes free: tension can hide in them (a pulled "
+      "no-tension bar is carried). doc/materials.md measures all three.");
     prm.leave_subsection();
   }
 
@@ -53,6 +65,7 @@ namespace hrcontact
     relative_tolerance = prm.get_double("Relative tolerance");
     maximum_updates    = prm.get_integer("Maximum updates");
     maximum_penalty    = prm.get_double("Maximum penalty");
+    constraint_points  = prm.get("Constraint points");
     prm.leave_subsection();
     if (!(initial_penalty > 0))
       throw InputError("Stress constraint iteration/Initial penalty must be "

@@ -78,6 +78,22 @@ namespace hrcontact
                         const dealii::Vector<double> &stress);
 
     /**
+     * Along the line s(theta) = s0 + theta delta of stress vectors, the
+     * derivative of the cell energies, sum_c int eps(sigma_theta) : delta
+     * sigma (the law's complementary energy at the Gauss points) plus the
+     * stress constraint's term at its points, sum_t w_t P(mu + alpha
+     * sigma_theta) : delta sigma_t; and, when `curvature` is given, delta^T
+     * F(s0) delta, the same energies' second derivative at s0 (F_c as
+     * refresh_flexibility assembles it). Sums over the owned cells of every
+     * process. MaterialIteration's line search uses them.
+     */
+    double
+    energy_slope(const FieldVector &s0,
+                 const FieldVector &delta,
+                 const double       theta,
+                 double            *curvature = nullptr) const;
+
+    /**
      * The augmented Lagrangian state of the scene's stress constraint
      * (Material/Admissible stresses), if any: refresh_flexibility then adds
      * its term at the cell vertices to F_c and d_c. Owned by the caller.

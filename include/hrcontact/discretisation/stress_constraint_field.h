@@ -17,19 +17,31 @@ namespace hrcontact
   /**
    * The augmented Lagrangian state of a stress constraint (StressConstraint):
    * a multiplier mu (the fracture strain of a no-tension body) at each
-   * vertex of each cell this process assembles, and the penalty alpha (a
-   * compliance, eq. 49 grows it). The constraint is imposed at the cell
-   * vertices, where the vertex (trapezoidal) rule evaluates its term: for
-   * the DGQ1 stress element these are the stress dofs, and since the Q1
-   * shape functions are non-negative and sum to one, a cell whose vertex
-   * stresses lie in the convex cone K has its whole stress field in K.
+   * constraint point of each cell this process assembles, and the penalty
+   * alpha (a compliance, eq. 49 grows it). The points, each weighted by its
+   * rule's JxW: the vertices (default; for DGQ1 the stress dofs, so that
+   * the whole bilinear field is admissible), the 2^dim Gauss points, or
+   * the cell centre. The first two can over-constrain the four-node stress
+   * field: near free edges and crack fronts no finite multipliers may
+   * exist, and the residual then only falls like alpha^-1/2; the centre
+   * leaves the bilinear modes free (doc/materials.md).
    */
   template <int dim>
   class StressConstraintField
   {
   public:
+    /** Where the cone is imposed (Stress constraint iteration/Constraint
+     * points). */
+    enum class Points
+    {
+      cell_centres,
+      gauss_points,
+      vertices
+    };
+
     StressConstraintField(const StressConstraint<dim> &constraint,
-                          const MixedSpaces<dim>      &spaces);
+                          const MixedSpaces<dim>      &spaces,
+                          const Points                 points);
 
     /** The vertex rule the constraint is imposed with. */
     const dealii::Quadrature<dim> &
@@ -66,7 +78,14 @@ namespace hrcontact
      * point weighted by its vertex-rule weight; over every process.
      */
     double
-    cracked_fraction(const double threshold = 1e-6) const;
+    cracked_fraction(const double threshold = 1e-2) const;
+
+    /**
+     * The largest opening of the points of the cell around `point` (found
+     * by the process that owns it; 0 outside the mesh), over every process.
+     */
+    double
+    opening_at(const dealii::Point<dim> &point) const;
 
     /** The largest StressConstraint::opening of a multiplier. */
     double
@@ -85,7 +104,7 @@ namespace hrcontact
 
   private:
     const MixedSpaces<dim>                      &spaces;
-    const dealii::QTrapezoid<dim>                rule;
+    const dealii::Quadrature<dim>                rule;
     std::vector<dealii::SymmetricTensor<2, dim>> mu;
     /** Vertex-rule weights JxW per point, for the cracked fraction. */
     std::vector<double> weights;

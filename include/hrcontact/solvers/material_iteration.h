@@ -23,6 +23,15 @@ namespace hrcontact
    * quadratically near the answer. The first step is the linear solve with
    * the compliance at zero stress.
    *
+   * A semismooth term (a stress constraint's projection) can make the full
+   * step cycle. With Operations::energy_slope each step is then damped by
+   * an exact line search: the energy along s_k + theta delta (delta the
+   * full Newton step; both ends in equilibrium, so is the segment) is
+   * convex, and its derivative is the cells' slope at theta minus their
+   * slope at 0 minus delta^T F_k delta (the Newton step makes the model's
+   * derivative vanish at theta = 1), all local: regula falsi finds its
+   * zero in (0, 1], theta = 1 when the full step does not overshoot.
+   *
    * The iteration stops when the largest change of a stress dof is at most
    * Relative tolerance times the largest stress, or when three changes in a
    * row stay below roundoff_ceiling without falling (the round-off floor of
@@ -50,6 +59,15 @@ namespace hrcontact
       std::function<void(FieldVector &)> stresses;
       /** F_c and d_c at the given stresses; the path told. */
       std::function<void(const FieldVector &)> linearise_at;
+      /**
+       * Optional: the derivative of the complementary energy along s0 +
+       * theta delta, as HRAssembler::energy_slope gives it, and delta^T
+       * F(s0) delta with a non-null last argument. With it, each step is
+       * damped by an exact line search (below).
+       */
+      std::function<
+        double(const FieldVector &, const FieldVector &, double, double *)>
+        energy_slope;
     };
 
     /**
@@ -83,7 +101,7 @@ namespace hrcontact
     double relative_tolerance = 1e-10;
     /** Changes below this that stop falling are round-off (see above). */
     double       roundoff_ceiling = 1e-8;
-    unsigned int maximum_steps    = 30;
+    unsigned int maximum_steps    = 100;
 
   private:
     std::vector<double> changes;

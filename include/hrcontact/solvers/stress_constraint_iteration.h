@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <ostream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -99,6 +100,8 @@ namespace hrcontact
     double       relative_tolerance = 1e-10;
     unsigned int maximum_updates    = 50;
     double       maximum_penalty    = 1e8;
+    /** Constraint points: "cell centres", "Gauss points" or "vertices". */
+    std::string constraint_points = "vertices";
 
   private:
     std::vector<double>       residuals, penalties;
