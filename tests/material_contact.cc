@@ -35,18 +35,6 @@ namespace
     return text;
   }
 
-  double
-  relative(const hrcontact::FieldVector &a, const hrcontact::FieldVector &b)
-  {
-    double diff = 0, scale = 0;
-    for (unsigned int i = 0; i < a.size(); ++i)
-      {
-        diff  = std::max(diff, std::abs(a[i] - b[i]));
-        scale = std::max(scale, std::abs(b[i]));
-      }
-    return diff / scale;
-  }
-
   std::string
   describe(const hrcontact::Results<2> &r)
   {

@@ -139,20 +139,7 @@ namespace
     // (a) u = eps x on every boundary.
     {
       std::ostringstream t;
-      t << std::setprecision(17) << "subsection Supports\n"
-        << "  set Prescribed displacements = ";
-      for (unsigned int id = 0; id < 2 * dim; ++id)
-        {
-          t << (id ? " | " : "") << id << ": ";
-          for (unsigned int i = 0; i < dim; ++i)
-            {
-              t << (i ? "; " : "");
-              for (unsigned int j = 0; j < dim; ++j)
-                t << (j ? " + " : "") << "(" << eps[i][j] << ")*"
-                  << "xyz"[j];
-            }
-        }
-      t << "\nend\n";
+      t << linear_displacement_supports<dim>(eps);
       report<dim>("displacement patch",
                   *solve_from_text<dim>(
                     patch_text<dim>(t.str(), reference.str())),

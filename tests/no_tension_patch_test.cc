@@ -44,19 +44,7 @@ namespace
       << "  set Admissible stresses = " << constraint
       << "\nend\nsubsection Output\n  set Write solution = false\n"
          "  set Output directory = results\nend\n"
-         "subsection Supports\n  set Prescribed displacements = ";
-    for (unsigned int id = 0; id < 2 * dim; ++id)
-      {
-        t << (id ? " | " : "") << id << ": ";
-        for (unsigned int i = 0; i < dim; ++i)
-          {
-            t << (i ? "; " : "");
-            for (unsigned int j = 0; j < dim; ++j)
-              t << (j ? " + " : "") << "(" << eps[i][j] << ")*"
-                << "xyz"[j];
-          }
-      }
-    t << "\nend\n" << extra;
+      << linear_displacement_supports<dim>(eps) << extra;
     return t.str();
   }
 

@@ -83,20 +83,7 @@ run()
   // (a) u = eps x on every boundary.
   {
     std::ostringstream t;
-    t << std::setprecision(17) << "subsection Supports\n"
-      << "  set Prescribed displacements = ";
-    for (unsigned int id = 0; id < 2 * dim; ++id)
-      {
-        t << (id ? " | " : "") << id << ": ";
-        for (unsigned int a = 0; a < dim; ++a)
-          {
-            t << (a ? "; " : "");
-            for (unsigned int b = 0; b < dim; ++b)
-              t << (b ? " + " : "") << "(" << eps[a][b] << ")*"
-                << "xyz"[b];
-          }
-      }
-    t << "\nend\n";
+    t << linear_displacement_supports<dim>(eps);
     report<dim>("displacement patch",
                 *solve_from_text<dim>(
                   patch_text<dim>(t.str(), reference.str())),

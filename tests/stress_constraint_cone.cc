@@ -4,6 +4,7 @@
 // admissible stresses, the two parts orthogonal, each in its cone), its
 // derivative DP against central differences of P (the Hessian of the
 // augmented Lagrangian term), DP symmetric and between 0 and the identity,
+// linearise (one spectral decomposition) equal to the single calls,
 // the violation and the factory's names.
 
 #include <deal.II/base/parameter_handler.h>
@@ -63,7 +64,7 @@ run(const std::string &name, const double sign)
   const auto constraint = make<dim>(name);
   std::cout << dim << "D '" << constraint->name() << "'\n";
   double moreau = 0, cones = 0, orthogonal = 0, derivative = 0, symmetric = 0,
-         bounded = 0;
+         bounded = 0, together = 0;
   // Mixed spectra (one eigenvalue of each sign), all positive, all negative.
   for (const auto &X : {tensor<dim>(1.3, -0.4, 0.7),
                         tensor<dim>(-2.1, 0.9, -1.4),
@@ -75,10 +76,27 @@ run(const std::string &name, const double sign)
       const SymmetricTensor<2, dim> A = X - P; // the admissible part
       moreau = std::max(moreau, (P + A - X).norm() / X.norm());
       // P in the multiplier cone (sign P >= 0), A admissible (sign A <= 0).
-      cones          = std::max({cones,
-                                 -smallest_eigenvalue<dim>(sign * P) / X.norm(),
-                                 -smallest_eigenvalue<dim>(-sign * A) / X.norm()});
-      orthogonal     = std::max(orthogonal, std::abs(P * A) / (X * X));
+      cones      = std::max({cones,
+                             -smallest_eigenvalue<dim>(sign * P) / X.norm(),
+                             -smallest_eigenvalue<dim>(-sign * A) / X.norm()});
+      orthogonal = std::max(orthogonal, std::abs(P * A) / (X * X));
+      // linearise (one spectrum, what the assembler calls) against the
+      // single calls.
+      {
+        const std::vector<SymmetricTensor<2, dim>> directions = {
+          tensor<dim>(1, 0, 0),
+          tensor<dim>(0, 0, 1),
+          tensor<dim>(0.4, -0.7, 0.3)};
+        SymmetricTensor<2, dim>              P1;
+        std::vector<SymmetricTensor<2, dim>> DP;
+        constraint->linearise(X, directions, P1, DP);
+        together = std::max(together, (P1 - P).norm() / X.norm());
+        for (unsigned int k = 0; k < directions.size(); ++k)
+          together = std::max(
+            together,
+            (DP[k] - constraint->project_derivative(X, directions[k])).norm() /
+              directions[k].norm());
+      }
       const double h = 1e-6;
       for (const auto &H : {tensor<dim>(1, 0, 0),
                             tensor<dim>(0, 1, 0),
@@ -107,6 +125,8 @@ run(const std::string &name, const double sign)
             << "\n  DP against central differences to 1e-8: "
             << check(derivative, 1e-8)
             << "\n  DP symmetric to 1e-13: " << check(symmetric, 1e-13)
+            << "\n  linearise = project and project_derivative to 1e-15: "
+            << check(together, 1e-15)
             << "\n  0 <= H : DP[H] <= H : H (to 1e-14): "
             << check(bounded, 1e-14) << '\n';
   // The violation: the largest principal stress of the wrong sign.

@@ -19,6 +19,49 @@
 
 namespace hrcontact_tests
 {
+  /**
+   * max |a - b| / max |b| over the entries of two vectors of the same
+   * numbering (serial runs).
+   */
+  inline double
+  relative(const hrcontact::FieldVector &a, const hrcontact::FieldVector &b)
+  {
+    double diff = 0, scale = 0;
+    for (unsigned int i = 0; i < a.size(); ++i)
+      {
+        diff  = std::max(diff, std::abs(a[i] - b[i]));
+        scale = std::max(scale, std::abs(b[i]));
+      }
+    return diff / scale;
+  }
+
+  /**
+   * subsection Supports prescribing u = eps x on every boundary id 0 ..
+   * 2 dim - 1 of a colorized box (eps in its upper-left dim x dim block),
+   * to 17 digits: the displacement patch test.
+   */
+  template <int dim>
+  std::string
+  linear_displacement_supports(const double eps[3][3])
+  {
+    std::ostringstream t;
+    t << std::setprecision(17) << "subsection Supports\n"
+      << "  set Prescribed displacements = ";
+    for (unsigned int id = 0; id < 2 * dim; ++id)
+      {
+        t << (id ? " | " : "") << id << ": ";
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            t << (i ? "; " : "");
+            for (unsigned int j = 0; j < dim; ++j)
+              t << (j ? " + " : "") << "(" << eps[i][j] << ")*"
+                << "xyz"[j];
+          }
+      }
+    t << "\nend\n";
+    return t.str();
+  }
+
   /** Build and solve a problem from parameter text (no files written). */
   template <int dim>
   std::unique_ptr<hrcontact::HRProblem<dim>>

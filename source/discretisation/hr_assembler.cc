@@ -109,9 +109,11 @@ namespace hrcontact
     bool       reuse_blocks = false;
     const bool may_reuse =
       !stress_state && !constraint_field && material.is_homogeneous();
-    // A stress constraint's term at the cell vertices (StressConstraintField).
-    std::unique_ptr<FEValues<dim>> fv_vertex;
-    FullMatrix<double>             K_vertex(n_comp, n_comp);
+    // A stress constraint's term at its points (StressConstraintField).
+    std::unique_ptr<FEValues<dim>>       fv_vertex;
+    FullMatrix<double>                   K_vertex(n_comp, n_comp);
+    SymmetricTensor<2, dim>              P;
+    std::vector<SymmetricTensor<2, dim>> DP;
     if (constraint_field)
       fv_vertex =
         std::make_unique<FEValues<dim>>(fe_s,
@@ -225,7 +227,7 @@ namespace hrcontact
             add_body_force(q, JxW);
           }
 
-        // The stress constraint's augmented Lagrangian term at the vertices:
+        // The stress constraint's augmented Lagrangian term at its points:
         // strain P(X) and compliance alpha DP(X), X = mu + alpha sigma
         // (StressConstraint); nothing where X has no part in the polar cone.
         if (constraint_field && !same)
@@ -244,13 +246,12 @@ namespace hrcontact
                 const SymmetricTensor<2, dim> X =
                   constraint_field->multiplier(blocks.cell, t) +
                   alpha * sigma_q;
-                const SymmetricTensor<2, dim> P = constraint.project(X);
+                constraint.linearise(X, T, P, DP);
                 if (P.norm() == 0)
                   continue;
                 for (unsigned int c = 0; c < n_comp; ++c)
                   for (unsigned int d = 0; d < n_comp; ++d)
-                    K_vertex(c, d) =
-                      alpha * (T[c] * constraint.project_derivative(X, T[d]));
+                    K_vertex(c, d) = alpha * (T[c] * DP[d]);
                 const double JxW = fv_vertex->JxW(t);
                 for (unsigned int i = 0; i < n_s; ++i)
                   {

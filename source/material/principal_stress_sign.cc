@@ -31,16 +31,54 @@ namespace hrcontact
     return sign > 0 ? "no tension" : "no compression";
   }
 
+  namespace
+  {
+    /** P_+ of the spectrum e (of s X), times s. */
+    template <int dim>
+    SymmetricTensor<2, dim>
+    positive_part(const std::array<std::pair<double, Tensor<1, dim>>, dim> &e,
+                  const double sign)
+    {
+      SymmetricTensor<2, dim> P;
+      for (unsigned int i = 0; i < dim; ++i)
+        if (e[i].first > 0)
+          P += e[i].first * symmetrize(outer_product(e[i].second, e[i].second));
+      return sign * P;
+    }
+
+    /** DP_+[H] at the spectrum e (Loewner's divided differences). */
+    template <int dim>
+    SymmetricTensor<2, dim>
+    derivative(const std::array<std::pair<double, Tensor<1, dim>>, dim> &e,
+               const SymmetricTensor<2, dim>                            &H)
+    {
+      SymmetricTensor<2, dim> D;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          {
+            const double li = e[i].first, lj = e[j].first;
+            double       theta;
+            if (li > 0 && lj > 0)
+              theta = 1;
+            else if (li <= 0 && lj <= 0)
+              theta = 0;
+            else // one positive, one not: li != lj
+              theta = (std::max(li, 0.) - std::max(lj, 0.)) / (li - lj);
+            if (theta == 0)
+              continue;
+            const double h = e[i].second * (H * e[j].second);
+            D +=
+              theta * h * symmetrize(outer_product(e[i].second, e[j].second));
+          }
+      return D;
+    }
+  } // namespace
+
   template <int dim>
   SymmetricTensor<2, dim>
   PrincipalStressSign<dim>::project(const SymmetricTensor<2, dim> &X) const
   {
-    const auto              e = spectrum<dim>(sign * X);
-    SymmetricTensor<2, dim> P;
-    for (unsigned int i = 0; i < dim; ++i)
-      if (e[i].first > 0)
-        P += e[i].first * symmetrize(outer_product(e[i].second, e[i].second));
-    return sign * P;
+    return positive_part<dim>(spectrum<dim>(sign * X), sign);
   }
 
   template <int dim>
@@ -49,25 +87,22 @@ namespace hrcontact
     const SymmetricTensor<2, dim> &X,
     const SymmetricTensor<2, dim> &H) const
   {
-    const auto              e = spectrum<dim>(sign * X);
-    SymmetricTensor<2, dim> D;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        {
-          const double li = e[i].first, lj = e[j].first;
-          double       theta;
-          if (li > 0 && lj > 0)
-            theta = 1;
-          else if (li <= 0 && lj <= 0)
-            theta = 0;
-          else // one positive, one not: li != lj
-            theta = (std::max(li, 0.) - std::max(lj, 0.)) / (li - lj);
-          if (theta == 0)
-            continue;
-          const double h = e[i].second * (H * e[j].second);
-          D += theta * h * symmetrize(outer_product(e[i].second, e[j].second));
-        }
-    return D;
+    return derivative<dim>(spectrum<dim>(sign * X), H);
+  }
+
+  template <int dim>
+  void
+  PrincipalStressSign<dim>::linearise(
+    const SymmetricTensor<2, dim>              &X,
+    const std::vector<SymmetricTensor<2, dim>> &H,
+    SymmetricTensor<2, dim>                    &P,
+    std::vector<SymmetricTensor<2, dim>>       &DP) const
+  {
+    const auto e = spectrum<dim>(sign * X);
+    P            = positive_part<dim>(e, sign);
+    DP.resize(H.size());
+    for (unsigned int k = 0; k < H.size(); ++k)
+      DP[k] = derivative<dim>(e, H[k]);
   }
 
   template <int dim>

@@ -44,9 +44,9 @@ namespace hrcontact
       "A cone the stresses must lie in, on top of the law: " + names +
         ". 'no tension' (masonry: no positive principal stress) and 'no "
         "compression' (membranes: no negative one) are imposed by the "
-        "consistent augmented Lagrangian at the cell vertices, with the "
-        "fracture strains as multipliers (subsection Stress constraint "
-        "iteration). 'any' adds nothing.");
+        "consistent augmented Lagrangian at the points that subsection "
+        "Stress constraint iteration names (the cell vertices by default), "
+        "with the fracture strains as multipliers. 'any' adds nothing.");
     prm.leave_subsection();
   }
 

@@ -137,7 +137,7 @@ namespace hrcontact
      * A stress constraint (Material/Admissible stresses,
      * StressConstraintIteration): the multiplier updates, the relative
      * residual after each, the material Newton steps of each inner solve,
-     * the area (volume) fraction of cracked vertex points, the largest
+     * the area (volume) fraction of cracked constraint points, the largest
      * fracture strain, and the state itself (for output), null without one.
      */
     std::vector<double>               constraint_residuals;

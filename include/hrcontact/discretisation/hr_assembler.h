@@ -96,7 +96,7 @@ namespace hrcontact
     /**
      * The augmented Lagrangian state of the scene's stress constraint
      * (Material/Admissible stresses), if any: refresh_flexibility then adds
-     * its term at the cell vertices to F_c and d_c. Owned by the caller.
+     * its term at the constraint points to F_c and d_c. Owned by the caller.
      */
     const StressConstraintField<dim> *constraint_field = nullptr;
 

@@ -40,6 +40,12 @@ namespace hrcontact
     dealii::SymmetricTensor<2, dim>
     project_derivative(const dealii::SymmetricTensor<2, dim> &X,
                        const dealii::SymmetricTensor<2, dim> &H) const override;
+    /** One spectral decomposition of s X for P and every DP[H_k]. */
+    void
+    linearise(const dealii::SymmetricTensor<2, dim>              &X,
+              const std::vector<dealii::SymmetricTensor<2, dim>> &H,
+              dealii::SymmetricTensor<2, dim>                    &P,
+              std::vector<dealii::SymmetricTensor<2, dim>> &DP) const override;
     double
     violation(const dealii::SymmetricTensor<2, dim> &sigma) const override;
     double

@@ -56,6 +56,24 @@ namespace hrcontact
                        const dealii::SymmetricTensor<2, dim> &H) const = 0;
 
     /**
+     * P(X) and DP(X)[H_k] for several directions at once: what the
+     * assembler needs at each constraint point (one per stress basis
+     * tensor). By default the two calls above; a cone whose projection
+     * needs a spectral decomposition computes it once here.
+     */
+    virtual void
+    linearise(const dealii::SymmetricTensor<2, dim>              &X,
+              const std::vector<dealii::SymmetricTensor<2, dim>> &H,
+              dealii::SymmetricTensor<2, dim>                    &P,
+              std::vector<dealii::SymmetricTensor<2, dim>>       &DP) const
+    {
+      P = project(X);
+      DP.resize(H.size());
+      for (unsigned int k = 0; k < H.size(); ++k)
+        DP[k] = project_derivative(X, H[k]);
+    }
+
+    /**
      * How far sigma is from K: the largest principal stress of the wrong
      * sign (0 inside K), in stress units.
      */
