@@ -1,9 +1,9 @@
 // Patch tests on distorted meshes, 2D (plane strain) and 3D: a uniform stress
 // state must be reproduced to round-off by the HR discretisation with DGQ1
-// stresses, (a) driven by the linear displacement field of that state
-// prescribed on the whole boundary, (b) driven by tractions on a body held
-// by rollers. The strain of the state is computed here independently of the
-// library's compliance.
+// stresses and with the Pian-Sumihara (3D: Pian-Tong) assumed-stress field, (a)
+// driven by the linear displacement field of that state prescribed on the whole
+// boundary, (b) driven by tractions on a body held by rollers. The strain of
+// the state is computed here independently of the library's compliance.
 
 #include <hrcontact/postprocess/field_values.h>
 
@@ -13,7 +13,9 @@ using namespace hrcontact_tests;
 
 template <int dim>
 std::string
-patch_text(const std::string &supports_and_loads, const std::string &reference)
+patch_text(const std::string &element,
+           const std::string &supports_and_loads,
+           const std::string &reference)
 {
   return "set Dimension = " + std::to_string(dim) +
          "\n"
@@ -26,8 +28,10 @@ patch_text(const std::string &supports_and_loads, const std::string &reference)
          "  set Young's modulus = 1000\n"
          "  set Poisson's ratio = 0.3\n"
          "  set Plane condition = plane strain\n"
-         "end\n" +
-         supports_and_loads +
+         "end\n"
+         "subsection Finite elements\n"
+         "  set Stress element = " +
+         element + "\nend\n" + supports_and_loads +
          "subsection Postprocess\n"
          "  set Reference stress = " +
          reference + "\nend\n";
@@ -58,9 +62,9 @@ report(const std::string               &name,
 
 template <int dim>
 void
-run()
+run(const std::string &element)
 {
-  std::cout << "dim = " << dim << std::endl;
+  std::cout << "dim = " << dim << ", stress element " << element << std::endl;
   const double E = 1000, nu = 0.3;
   double       s[3][3] = {{3., 1.5, -0.7}, {1.5, -2., 0.4}, {-0.7, 0.4, 0.5}};
   if (dim == 2)
@@ -86,7 +90,7 @@ run()
     t << linear_displacement_supports<dim>(eps);
     report<dim>("displacement patch",
                 *solve_from_text<dim>(
-                  patch_text<dim>(t.str(), reference.str())),
+                  patch_text<dim>(element, t.str(), reference.str())),
                 reference.str());
   }
 
@@ -110,7 +114,8 @@ run()
           t << (a ? "; " : "") << (a == d ? s[d][d] : 0.);
       }
     t << "\nend\n";
-    auto problem = solve_from_text<dim>(patch_text<dim>(t.str(), ref.str()));
+    auto problem =
+      solve_from_text<dim>(patch_text<dim>(element, t.str(), ref.str()));
     report<dim>("traction patch", *problem, ref.str());
     // The rollers carry the load: reaction on x = 0 balances s_xx * area.
     double rx = 0;
@@ -131,6 +136,9 @@ int
 main()
 {
   std::cout << std::setprecision(6);
-  run<2>();
-  run<3>();
+  for (const std::string element : {"DGQ1", "Pian-Sumihara"})
+    {
+      run<2>(element);
+      run<3>(element);
+    }
 }

@@ -118,8 +118,8 @@ namespace hrcontact
         << "  mesh: " << triangulation->n_global_active_cells() << " cells, "
         << spaces.dof_handler_displacement.n_dofs() / dim << " nodes\n"
         << "  dofs: " << spaces.dof_handler_displacement.n_dofs()
-        << " displacement, " << spaces.dof_handler_stress.n_dofs() << " stress"
-        << std::endl;
+        << " displacement, " << spaces.stress_unknowns().n_dofs() << " stress"
+        << (spaces.has_parameters() ? " parameters" : "") << std::endl;
     if (partition.distributed())
       log << "  parallel: " << partition.describe()
           << (distributed_mesh ?
@@ -151,7 +151,7 @@ namespace hrcontact
   HRProblem<dim>::dense_reduction_bytes(const double n_free_rows) const
   {
     // C (n x tau), the null-space basis (n x m) and M0 with its factor.
-    const double n = n_free_rows, tau = spaces.dof_handler_stress.n_dofs();
+    const double n = n_free_rows, tau = spaces.stress_unknowns().n_dofs();
     const double m = std::max(0., tau - n);
     return 8 * (tau * n + n * m + 2 * m * m);
   }
@@ -565,7 +565,7 @@ namespace hrcontact
     MaterialIteration::Operations operations;
     operations.solve    = solve_once;
     operations.stresses = [&](FieldVector &s) {
-      reinit_field(s, spaces.dof_handler_stress);
+      reinit_field(s, spaces.stress_unknowns());
       path.stresses(s);
     };
     operations.linearise_at = [&](const FieldVector &s) {
@@ -647,8 +647,13 @@ namespace hrcontact
   HRProblem<dim>::collect_fields(const NewtonStepPath &path)
   {
     Results<dim> &r = results_;
+    // The solver's stress unknowns; Results::stress holds their values
+    // (the same vector unless the stress element has parameters).
+    FieldVector unknowns;
+    reinit_field(unknowns, spaces.stress_unknowns());
+    path.stresses(unknowns);
     reinit_field(r.stress, spaces.dof_handler_stress);
-    path.stresses(r.stress);
+    spaces.expand(unknowns, r.stress);
     reinit_field(r.displacement, spaces.dof_handler_displacement);
     path.displacements(r.contact_w, r.displacement);
     // The reactions B~_r s - f~_r, each computed by the owner of its node
@@ -660,7 +665,7 @@ namespace hrcontact
         {
           const EquilibriumRow &row = system.rows[rows[k]];
           if (partition.owned.is_element(row.combination.front().first))
-            values[k] = system.row_times(row, r.stress) - system.row_load(row);
+            values[k] = system.row_times(row, unknowns) - system.row_load(row);
         }
       if (partition.distributed())
         Utilities::MPI::sum(values, partition.communicator, values);

@@ -39,10 +39,14 @@ namespace hrcontact
     const std::function<void(const CellBlocks &)> &worker) const
   {
     const DoFHandler<dim> &dh_u   = spaces.dof_handler_displacement;
-    const DoFHandler<dim> &dh_s   = spaces.dof_handler_stress;
+    const DoFHandler<dim> &dh_s   = spaces.stress_unknowns();
     const auto            &fe_u   = *spaces.fe_displacement;
     const auto            &fe_s   = *spaces.fe_stress;
     constexpr unsigned int n_comp = MixedSpaces<dim>::n_stress_components;
+    // An assumed-stress element: the blocks are integrated in the value
+    // element and handed on as B_c T_c, T_c^T F_c T_c, T_c^T d_c.
+    const bool         parameters = spaces.has_parameters();
+    const unsigned int n_p        = dh_s.get_fe().n_dofs_per_cell();
 
     // Q1 x DGQ1 products are integrated exactly on parallelograms by 2 Gauss
     // points per direction; so are the constant-stress patch tests on
@@ -88,11 +92,14 @@ namespace hrcontact
     CellBlocks blocks;
     auto      &du = blocks.displacement_dofs;
     auto      &ds = blocks.stress_dofs;
-    auto      &Fc = blocks.F;
-    auto      &Bc = blocks.B;
-    auto      &fc = blocks.load;
+    // In the value element: the blocks themselves, or scratch to reduce.
+    FullMatrix<double> F_values, B_values, T_c;
+    Vector<double>     strain_values, s_loc(n_s), beta(n_p);
+    auto              &Fc = parameters ? F_values : blocks.F;
+    auto              &Bc = parameters ? B_values : blocks.B;
+    auto              &fc = blocks.load;
     du.resize(n_u);
-    ds.resize(n_s);
+    ds.resize(n_p);
     Bc.reinit(n_u, n_s);
     Fc.reinit(n_s, n_s);
     fc.reinit(n_u);
@@ -130,9 +137,24 @@ namespace hrcontact
             continue;
           }
         fv_u.reinit(cu);
-        fv_s.reinit(cs);
+        fv_s.reinit(typename Triangulation<dim>::cell_iterator(cs));
         cu->get_dof_indices(du);
         cs->get_dof_indices(ds);
+        // The stress state's value dofs on this cell.
+        if (parameters)
+          spaces.cell_expansion(cs, T_c);
+        if (stress_state)
+          {
+            if (parameters)
+              {
+                for (unsigned int j = 0; j < n_p; ++j)
+                  beta[j] = (*stress_state)[ds[j]];
+                T_c.vmult(s_loc, beta);
+              }
+            else
+              for (unsigned int j = 0; j < n_s; ++j)
+                s_loc[j] = (*stress_state)[ds[j]];
+          }
 
         // A translation of the previous cell (deal.II's CellSimilarity:
         // FEValues then copies its Jacobians, so JxW and the gradients are
@@ -154,7 +176,8 @@ namespace hrcontact
         // int psi : eps(sigma).
         const bool strain_term =
           (stress_state && !material.is_linear()) || constraint_field;
-        blocks.strain_term.reinit(strain_term ? n_s : 0);
+        auto &st = parameters ? strain_values : blocks.strain_term;
+        st.reinit(strain_term ? n_s : 0);
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           {
             const double JxW = fv_u.JxW(q);
@@ -175,8 +198,7 @@ namespace hrcontact
               {
                 sigma_q = 0;
                 for (unsigned int j = 0; j < n_s; ++j)
-                  sigma_q += (*stress_state)[ds[j]] * fv_s.shape_value(j, q) *
-                             T[comp_s[j]];
+                  sigma_q += s_loc[j] * fv_s.shape_value(j, q) * T[comp_s[j]];
               }
             for (unsigned int c = 0; c < n_comp; ++c)
               for (unsigned int d = 0; d < n_comp; ++d)
@@ -191,7 +213,7 @@ namespace hrcontact
                 const SymmetricTensor<2, dim> eps =
                   material.strain(sigma_q, fv_u.quadrature_point(q));
                 for (unsigned int i = 0; i < n_s; ++i)
-                  blocks.strain_term(i) += psi[i] * (T[comp_s[i]] * eps) * JxW;
+                  st(i) += psi[i] * (T[comp_s[i]] * eps) * JxW;
               }
             // Terms with a zero compliance or strain factor add nothing.
             for (unsigned int i = 0; i < n_s; ++i)
@@ -235,14 +257,14 @@ namespace hrcontact
             const StressConstraint<dim> &constraint =
               constraint_field->constraint;
             const double alpha = constraint_field->alpha;
-            fv_vertex->reinit(cs);
+            fv_vertex->reinit(typename Triangulation<dim>::cell_iterator(cs));
             for (unsigned int t = 0; t < fv_vertex->n_quadrature_points; ++t)
               {
                 sigma_q = 0;
                 if (stress_state)
                   for (unsigned int j = 0; j < n_s; ++j)
-                    sigma_q += (*stress_state)[ds[j]] *
-                               fv_vertex->shape_value(j, t) * T[comp_s[j]];
+                    sigma_q +=
+                      s_loc[j] * fv_vertex->shape_value(j, t) * T[comp_s[j]];
                 const SymmetricTensor<2, dim> X =
                   constraint_field->multiplier(blocks.cell, t) +
                   alpha * sigma_q;
@@ -258,7 +280,7 @@ namespace hrcontact
                     const double psi_i = fv_vertex->shape_value(i, t);
                     if (psi_i == 0)
                       continue;
-                    blocks.strain_term(i) += psi_i * (T[comp_s[i]] * P) * JxW;
+                    st(i) += psi_i * (T[comp_s[i]] * P) * JxW;
                     for (unsigned int j = 0; j < n_s; ++j)
                       {
                         const double k = K_vertex(comp_s[i], comp_s[j]);
@@ -318,7 +340,21 @@ namespace hrcontact
         if (strain_term && stress_state)
           for (unsigned int i = 0; i < n_s; ++i)
             for (unsigned int j = 0; j < n_s; ++j)
-              blocks.strain_term(i) -= Fc(i, j) * (*stress_state)[ds[j]];
+              st(i) -= Fc(i, j) * s_loc[j];
+        if (parameters)
+          {
+            // A translated cell has the same T_c: its reduced blocks too.
+            if (!same)
+              {
+                blocks.B.reinit(n_u, n_p);
+                blocks.F.reinit(n_p, n_p);
+                Bc.mmult(blocks.B, T_c);
+                blocks.F.triple_product(Fc, T_c, T_c, true, false);
+              }
+            blocks.strain_term.reinit(st.size() > 0 ? n_p : 0);
+            if (st.size() > 0)
+              T_c.Tvmult(blocks.strain_term, st);
+          }
         worker(blocks);
         ++cs;
       }
@@ -333,7 +369,7 @@ namespace hrcontact
     const unsigned int     n_cells = dh_u.get_triangulation().n_active_cells();
     system.dim                     = dim;
     system.n_displacement_dofs     = dh_u.n_dofs();
-    system.n_stress_dofs           = spaces.dof_handler_stress.n_dofs();
+    system.n_stress_dofs           = spaces.stress_unknowns().n_dofs();
 
     // The stored cells: all, or those touching a Q or H row's node.
     system.stored_cell.clear();
@@ -371,7 +407,7 @@ namespace hrcontact
                                    system.B_dofs.n_elements(),
                                  system.n_stress_dofs);
       std::vector<types::global_dof_index> du, ds;
-      auto cs = spaces.dof_handler_stress.begin_active();
+      auto cs = spaces.stress_unknowns().begin_active();
       for (const auto &cu : dh_u.active_cell_iterators())
         {
           if (!cu->is_artificial() && stored(cu->active_cell_index()))
@@ -548,7 +584,7 @@ namespace hrcontact
                                         constraint_field->quadrature(),
                                         update_values | update_JxW_values);
     const unsigned int                   n_s = fe_s.n_dofs_per_cell();
-    std::vector<types::global_dof_index> ds(n_s);
+    Vector<double>                       v0, vdelta;
     std::vector<SymmetricTensor<2, dim>> T(n_comp);
     for (unsigned int c = 0; c < n_comp; ++c)
       T[c] = MixedSpaces<dim>::stress_basis_tensor(c);
@@ -563,8 +599,8 @@ namespace hrcontact
           const double psi = v.shape_value(j, q);
           if (psi == 0)
             continue;
-          base += s0[ds[j]] * psi * T[comp[j]];
-          step += delta[ds[j]] * psi * T[comp[j]];
+          base += v0[j] * psi * T[comp[j]];
+          step += vdelta[j] * psi * T[comp[j]];
         }
       return std::make_pair(base, step);
     };
@@ -573,7 +609,8 @@ namespace hrcontact
       {
         if (!cell->is_locally_owned())
           continue;
-        cell->get_dof_indices(ds);
+        spaces.cell_values(cell, s0, v0);
+        spaces.cell_values(cell, delta, vdelta);
         fv.reinit(cell);
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           {
@@ -623,7 +660,7 @@ namespace hrcontact
     const DoFHandler<dim> &dh_u = spaces.dof_handler_displacement;
     system.dim                  = dim;
     system.n_displacement_dofs  = dh_u.n_dofs();
-    system.n_stress_dofs        = spaces.dof_handler_stress.n_dofs();
+    system.n_stress_dofs        = spaces.stress_unknowns().n_dofs();
 
     // Nodes: node n has the dofs dim n + d (EquilibriumSystem::dof_node),
     // which also numbers them in the order the cells first reach them.

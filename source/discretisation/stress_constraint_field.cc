@@ -25,7 +25,7 @@ namespace hrcontact
       const FiniteElement<dim> &fe = *spaces.fe_stress;
       FEValues<dim>             fv(fe, rule, update_values | update_JxW_values);
       const unsigned int        n_s = fe.n_dofs_per_cell();
-      std::vector<types::global_dof_index> ds(n_s);
+      Vector<double>            values(n_s);
       std::vector<SymmetricTensor<2, dim>> T(
         MixedSpaces<dim>::n_stress_components);
       for (unsigned int c = 0; c < T.size(); ++c)
@@ -39,13 +39,13 @@ namespace hrcontact
             continue;
           fv.reinit(cell);
           if (stress)
-            cell->get_dof_indices(ds);
+            spaces.cell_values(cell, *stress, values);
           for (unsigned int t = 0; t < rule.size(); ++t)
             {
               SymmetricTensor<2, dim> sigma;
               if (stress)
                 for (unsigned int j = 0; j < n_s; ++j)
-                  sigma += (*stress)[ds[j]] * fv.shape_value(j, t) * T[comp[j]];
+                  sigma += values[j] * fv.shape_value(j, t) * T[comp[j]];
               visit(cell->active_cell_index(),
                     cell->is_locally_owned(),
                     t,
