@@ -672,6 +672,10 @@ namespace hrcontact
     };
     reactions(system.contact_rows, r.contact_reactions);
     reactions(system.prescribed_rows, r.support_reactions);
+    if (spaces.has_parameters())
+      r.stress_parameters.swap(unknowns);
+    else
+      r.stress_parameters.reinit(0);
     // The node displacement of each Q row, by the owner of its node.
     const unsigned int  nq = system.contact_rows.size();
     std::vector<double> node_u(3 * nq, 0.);

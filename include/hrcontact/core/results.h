@@ -65,6 +65,18 @@ namespace hrcontact
      * complete on a serial mesh.
      */
     FieldVector stress;
+    /**
+     * The stress element's parameters (Pian-Sumihara's beta per cell,
+     * numbered by MixedSpaces::stress_unknowns()), on which the equilibrium
+     * rows act; empty for a nodal element, whose unknowns are `stress`.
+     */
+    FieldVector stress_parameters;
+    /** What EquilibriumSystem's rows multiply (C s, Q s, H s). */
+    const FieldVector &
+    stress_unknowns() const
+    {
+      return stress_parameters.size() ? stress_parameters : stress;
+    }
     /** The displacements u (eq. 51), the mesh's numbering: on a
      * distributed mesh the owned and ghost (locally relevant) dofs; complete
      * on a serial mesh. */
