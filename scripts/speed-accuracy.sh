@@ -40,6 +40,13 @@
 #   bash scripts/speed-accuracy.sh            full study (R = 3 repeats)
 #   QUICK=1 bash scripts/speed-accuracy.sh    quick check: one mesh per scene,
 #                                             Relative tolerance 1e-8, R = 1
+#
+# A second part (issue 20), scripts/speed_accuracy_elements.py: the stress
+# elements DGQ1 and Pian-Sumihara on the cantilever and Cook's membrane,
+# error against wall time and against unknowns on both Newton-step paths:
+# doc/speed-accuracy-elements.csv, doc/speed-accuracy-elements-table.md,
+# doc/figures/speed-accuracy-elements.png (about 3 minutes).
+#   PART=solvers | elements | all (default) selects the parts.
 # Optional overrides (environment): REPEATS, TOLERANCES ("1e-4 1e-8"),
 # HERTZ_LEVELS ("5 6"), LIFT_OFF_LEVELS ("5 6") (Global refinements),
 # RUN_TIMEOUT (seconds per run, default 600), WORK (default /tmp/speed-accuracy).
@@ -53,7 +60,7 @@ command -v gnuplot > /dev/null || { echo "gnuplot is missing: apt-get install gn
 # The command line that reproduces this run (printed at the top of the table):
 # QUICK plus whichever overrides were given.
 reproduce=""
-for v in QUICK REPEATS TOLERANCES HERTZ_LEVELS LIFT_OFF_LEVELS RUN_TIMEOUT WORK; do
+for v in PART QUICK REPEATS TOLERANCES HERTZ_LEVELS LIFT_OFF_LEVELS RUN_TIMEOUT WORK; do
   if [ -n "${!v:-}" ]; then
     case ${!v} in
       *" "*) reproduce+="$v=\"${!v}\" " ;;
@@ -77,11 +84,17 @@ else
 fi
 : "${RUN_TIMEOUT:=600}" "${WORK:=/tmp/speed-accuracy}"
 # Wipe only what an earlier run of this script put there.
-rm -rf "$WORK"/hertz-r* "$WORK"/lift-off-r* "$WORK"/plot
+part=${PART:-all}
+case "$part" in
+  all|solvers|elements) ;;
+  *) echo "PART must be all, solvers or elements (got '$part')" >&2; exit 2 ;;
+esac
+rm -rf "$WORK"/hertz-r* "$WORK"/lift-off-r* "$WORK"/plot "$WORK"/elements
 mkdir -p "$WORK" doc/figures
 export MODE=$mode REPEATS TOLERANCES HERTZ_LEVELS LIFT_OFF_LEVELS RUN_TIMEOUT WORK
 export REPRODUCE=$reproduce ROOT=$PWD
 
+if [ "$part" != elements ]; then
 # Run the sweep, write the CSV, the table and the plot script.
 python3 - <<'PY'
 import csv, datetime, math, os, shutil, statistics, subprocess, time
@@ -532,3 +545,8 @@ PY
 gnuplot "$WORK/plot/speed-accuracy.gp"
 mv doc/figures/speed-accuracy.png.tmp doc/figures/speed-accuracy.png
 echo "wrote doc/figures/speed-accuracy.png"
+fi
+
+if [ "$part" != solvers ]; then
+  python3 scripts/speed_accuracy_elements.py
+fi
