@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # How far the dense equilibrium reduction (the paper's null-space path) goes:
 # the cantilever of parameters/cantilever.prm on 10k x k cells, for growing k,
-# one run each (the wall times of these runs are seconds to minutes, far above
+# with DGQ1 stresses (STRESS_ELEMENT=Pian-Sumihara for the scene's own), one run each (the wall times of these runs are seconds to minutes, far above
 # the noise). Prints a Markdown table: cells, stress dofs, free rows n,
 # dim(s0) = m, wall seconds of the whole run, peak resident memory.
 #   bash scripts/benchmark-reduction.sh [k ...]      (default: 4 6 8 10 12)
@@ -21,6 +21,9 @@ for k in $ks; do
 end
 subsection Equilibrium reduction
   set Path = null-space
+end
+subsection Finite elements
+  set Stress element = ${STRESS_ELEMENT:-DGQ1}
 end" "$tmp"
   printf "| %s | %s | %s | %s | %.1f | %d |\n" "$(get cells)" "$(get stress_dofs)" \
     "$(get free_rows)" "$(get self_equilibrated_stresses)" \

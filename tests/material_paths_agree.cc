@@ -52,6 +52,7 @@ main()
 {
   compare("Ramberg-Osgood cantilever, 10 x 1 cells x 4",
           read_file(std::string(SOURCE_DIR) + "/../parameters/cantilever.prm") +
+            "subsection Finite elements\n  set Stress element = DGQ1\nend\n"
             "subsection Material\n  set Model = Ramberg-Osgood\n"
             "  set Ramberg-Osgood coefficient = 3/7\n"
             "  set Ramberg-Osgood reference stress = 40e6\n"
