@@ -97,7 +97,10 @@ export REPRODUCE=$reproduce ROOT=$PWD
 if [ "$part" != elements ]; then
 # Run the sweep, write the CSV, the table and the plot script.
 python3 - <<'PY'
-import csv, datetime, math, os, shutil, statistics, subprocess, time
+import csv, datetime, math, os, shutil, statistics, subprocess, sys, time
+
+sys.path.insert(0, os.path.join(os.environ["ROOT"], "scripts"))
+from summary_file import num, read_summary  # noqa: E402
 
 ROOT = os.environ["ROOT"]
 EXE = os.path.join(ROOT, "build", "hrcontact")
@@ -171,25 +174,6 @@ subsection Output
   set Write solution   = false
 end
 """
-
-
-def read_summary(path):
-    """summary.txt as a dict of strings ('key = value' lines)."""
-    s = {}
-    if os.path.exists(path):
-        with open(path) as f:
-            for line in f:
-                if " = " in line:
-                    k, v = line.rstrip("\n").split(" = ", 1)
-                    s[k.strip()] = v.strip()
-    return s
-
-
-def num(s, key):
-    try:
-        return float(s[key])
-    except (KeyError, ValueError):
-        return NAN
 
 
 def read_contact(path):

@@ -25,7 +25,11 @@ import os
 import shutil
 import statistics
 import subprocess
+import sys
 import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from summary_file import NAN, num, read_summary  # noqa: E402
 
 ROOT = os.environ["ROOT"]
 EXE = os.path.join(ROOT, "build", "hrcontact")
@@ -48,29 +52,10 @@ SCENES = [
      (2, 4, 8, 16) if MODE == "quick" else (2, 4, 8, 16, 32, 64),
      "relative_error.tip_deflection", "deflection at (48, 52)"),
 ]
-NAN = float("nan")
 
 
 def log(msg):
     print(msg, flush=True)
-
-
-def read_summary(path):
-    s = {}
-    if os.path.exists(path):
-        with open(path) as f:
-            for line in f:
-                if " = " in line:
-                    k, v = line.rstrip("\n").split(" = ", 1)
-                    s[k.strip()] = v.strip()
-    return s
-
-
-def num(s, key):
-    try:
-        return float(s[key])
-    except (KeyError, ValueError):
-        return NAN
 
 
 def run(name, scene_prm, mesh, element, path):
