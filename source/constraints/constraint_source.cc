@@ -50,6 +50,24 @@ namespace hrcontact
   }
 
   template <int dim>
+  void
+  ConstraintSource<dim>::prepare(const std::vector<BoundaryFace<dim>> &,
+                                 const EquilibriumSystem &) const
+  {}
+
+  template <int dim>
+  void
+  ConstraintSource<dim>::couple_rows(EquilibriumSystem &) const
+  {}
+
+  template <int dim>
+  bool
+  ConstraintSource<dim>::couples_nodes() const
+  {
+    return false;
+  }
+
+  template <int dim>
   bool
   ConstraintSource<dim>::changes_rows() const
   {

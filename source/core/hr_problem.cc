@@ -77,6 +77,11 @@ namespace hrcontact
         Utilities::MPI::job_supports_mpi() ?
           Utilities::MPI::n_mpi_processes(mpi_communicator) :
           1;
+      for (const auto &source : scene.constraints)
+        if (n_processes > 1 && source->couples_nodes())
+          throw InputError(source->entry() +
+                           ": rows that couple the nodes of two bodies run "
+                           "on one process so far; run without mpirun.");
       replicated_mesh_reason =
         reduction.path == "null-space" ? "the null-space path" :
         scene.distortion != 0          ? "Geometry/Distortion" :
@@ -420,8 +425,8 @@ namespace hrcontact
     // The nodal compliance of the finer mesh against the coarser one (2D:
     // the same; 3D: twice), and reactions per tributary area.
     const double compliance_scale =
-      scene.material->nodal_compliance(*triangulation) /
-      coarse.scene.material->nodal_compliance(*coarse.triangulation);
+      scene.nodal_compliance(*triangulation) /
+      coarse.scene.nodal_compliance(*coarse.triangulation);
     contact_solver.start_from(transfer_contact_state(coarse.system,
                                                      *coarse.results().contact,
                                                      system,
@@ -466,8 +471,7 @@ namespace hrcontact
     TimerOutput::Scope t(timer, "augmented Lagrangian");
     // The largest nodal load (distributed: the largest on any process).
     const double load_scale = system.load.linfty_norm();
-    contact_solver.set_nodal_compliance(
-      scene.material->nodal_compliance(*triangulation));
+    contact_solver.set_nodal_compliance(scene.nodal_compliance(*triangulation));
     r.free_rigid_motions = rigid_motions_held_only_by_contact(system);
     contact_solver.held_only_by_contact = (r.free_rigid_motions > 0);
     // Kinds whose rows follow the configuration (curved obstacles).
@@ -513,7 +517,7 @@ namespace hrcontact
         first = false;
         contact_solve();
         if (!contact_solver.result().converged() &&
-            (!scene.material->is_linear() || scene.stress_constraint))
+            (!scene.all_linear() || scene.stress_constraint))
           throw NotConvergedError(
             "Material iteration, step " +
             std::to_string(material_iteration.n_steps() + 1) +
@@ -541,7 +545,7 @@ namespace hrcontact
     r.constraint_inner_steps.clear();
     r.constraint_field     = nullptr;
     const bool constrained = static_cast<bool>(scene.stress_constraint);
-    if (scene.material->is_linear() && !constrained)
+    if (scene.all_linear() && !constrained)
       {
         solve_once();
         return;
@@ -736,7 +740,7 @@ namespace hrcontact
     summary.add("iterations", r.contact ? r.contact->history.size() : 0);
     summary.add("newton_steps", r.contact ? r.contact->total_newton_steps : 0);
     summary.add("converged", r.converged() ? "true" : "false");
-    if (!scene.material->is_linear() || scene.stress_constraint)
+    if (!scene.all_linear() || scene.stress_constraint)
       {
         summary.add("material_newton_steps", r.material_steps);
         summary.add("material_stress_change",

@@ -7,6 +7,7 @@
 #include <deal.II/distributed/tria_base.h>
 
 #include <hrcontact/core/scene.h>
+#include <hrcontact/geometry/multi_body_grid.h>
 #include <hrcontact/geometry/tunnel_lining_grid.h>
 
 #include <cmath>
@@ -118,6 +119,7 @@ namespace hrcontact
     prm.leave_subsection();
 
     ConstraintSources<dim>::declare_parameters(prm);
+    MultiBodyGrid<dim>::declare_parameters(prm);
   }
 
   template <int dim>
@@ -177,6 +179,61 @@ namespace hrcontact
     if (const auto *tunnel =
           dynamic_cast<const TunnelLiningGrid<dim> *>(grid.get()))
       lining = tunnel->lining();
+
+    // Further bodies: the mesh joins them, each keeps its material.
+    auto bodies = MultiBodyGrid<dim>::parse_bodies(prm, constants);
+    n_bodies    = 1 + bodies.size();
+    body_materials.clear();
+    if (!bodies.empty())
+      {
+        if (lining)
+          throw InputError("Bodies: the tunnel_lining grid is a scene of "
+                           "one body.");
+        body_materials.push_back(nullptr);
+        for (const auto &body : bodies)
+          body_materials.push_back(body.material);
+        grid = std::make_shared<MultiBodyGrid<dim>>(grid, std::move(bodies));
+      }
+  }
+
+  template <int dim>
+  const MaterialLaw<dim> &
+  Scene<dim>::material_of(const types::material_id body) const
+  {
+    if (body < body_materials.size() && body_materials[body])
+      return *body_materials[body];
+    return *material;
+  }
+
+  template <int dim>
+  bool
+  Scene<dim>::has_body_materials() const
+  {
+    for (const auto &m : body_materials)
+      if (m)
+        return true;
+    return false;
+  }
+
+  template <int dim>
+  bool
+  Scene<dim>::all_linear() const
+  {
+    for (const auto &m : body_materials)
+      if (m && !m->is_linear())
+        return false;
+    return material->is_linear();
+  }
+
+  template <int dim>
+  double
+  Scene<dim>::nodal_compliance(const Triangulation<dim> &triangulation) const
+  {
+    double c = material->nodal_compliance(triangulation);
+    for (const auto &m : body_materials)
+      if (m)
+        c = std::max(c, m->nodal_compliance(triangulation));
+    return c;
   }
 
   template <int dim>
@@ -232,9 +289,10 @@ namespace hrcontact
 
   template <int dim>
   double
-  Scene<dim>::out_of_plane_stress(const SymmetricTensor<2, dim> &sigma) const
+  Scene<dim>::out_of_plane_stress(const SymmetricTensor<2, dim> &sigma,
+                                  const types::material_id       body) const
   {
-    return material->out_of_plane_stress(sigma);
+    return material_of(body).out_of_plane_stress(sigma);
   }
 
   template <int dim>

@@ -16,19 +16,23 @@ namespace hrcontact
     : spaces(spaces)
   {
     // A nonlinear law: the elastic solve of its elastic part.
-    const LinearElasticity<dim> *law = scene.material->elastic_part();
-    if (!law)
-      throw InputError("Output/Time the Q1 floor: the floor is a linear "
-                       "elastic displacement solve; Material/Model names a "
-                       "law without a linear elastic part.");
-    const double E = law->youngs_modulus(), nu = law->poisson_ratio();
-    mu = E / (2 * (1 + nu));
-    // Plane stress: sigma_zz = 0 condenses lambda to 2 lambda mu / (lambda +
-    // 2 mu) = E nu / (1 - nu^2), finite at nu = 1/2 (which plane stress
-    // allows) where lambda itself is not.
-    lambda = (dim == 2 && !law->is_plane_strain()) ?
-               E * nu / (1 - nu * nu) :
-               E * nu / ((1 + nu) * (1 - 2 * nu));
+    for (unsigned int body = 0; body < scene.n_bodies; ++body)
+      {
+        const LinearElasticity<dim> *law =
+          scene.material_of(body).elastic_part();
+        if (!law)
+          throw InputError("Output/Time the Q1 floor: the floor is a linear "
+                           "elastic displacement solve; Material/Model names "
+                           "a law without a linear elastic part.");
+        const double E = law->youngs_modulus(), nu = law->poisson_ratio();
+        mu.push_back(E / (2 * (1 + nu)));
+        // Plane stress: sigma_zz = 0 condenses lambda to 2 lambda mu /
+        // (lambda + 2 mu) = E nu / (1 - nu^2), finite at nu = 1/2 (which
+        // plane stress allows) where lambda itself is not.
+        lambda.push_back((dim == 2 && !law->is_plane_strain()) ?
+                           E * nu / (1 - nu * nu) :
+                           E * nu / ((1 + nu) * (1 - 2 * nu)));
+      }
   }
 
   template <int dim>
@@ -52,7 +56,12 @@ namespace hrcontact
           continue;
         fv.reinit(cell);
         cell->get_dof_indices(dofs);
-        K = 0;
+        // One body: whatever material ids the grid generator set.
+        const unsigned int body =
+          this->mu.size() > 1 ? cell->material_id() : 0;
+        const double lambda = this->lambda.at(body);
+        const double mu     = this->mu.at(body);
+        K                   = 0;
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           {
             for (unsigned int i = 0; i < n; ++i)

@@ -198,49 +198,63 @@ namespace hrcontact
     const std::array<double, 3> centre = system.node_coordinates.centre();
     const double size = std::max(system.node_coordinates.extent(), 1e-300);
 
-    dealii::LAPACKFullMatrix<double> gram(n_modes, n_modes);
-    auto                             add_row = [&](const EquilibriumRow &row) {
-      const auto           &x = row.node < system.node_coordinates.size() ?
-                                                              system.node_coordinates[row.node] :
-                                                              centre;
-      std::array<double, 3> r = {{(x[0] - centre[0]) / size,
-                                  (x[1] - centre[1]) / size,
-                                  (x[2] - centre[2]) / size}};
-      // d . m for the modes: translations e_k, rotations (-y, x, 0),
-      // (0, -z, y), (z, 0, -x).
-      std::array<double, 3> d = {{0, 0, 0}};
-      for (unsigned int k = 0; k < row.combination.size() && k < dim; ++k)
-        d[k] = row.direction_component(k);
-      std::vector<double> v(n_modes, 0.);
-      for (unsigned int k = 0; k < dim; ++k)
-        v[k] = d[k];
-      v[dim] = -r[1] * d[0] + r[0] * d[1];
-      if (dim == 3)
-        {
-          v[4] = -r[2] * d[1] + r[1] * d[2];
-          v[5] = r[2] * d[0] - r[0] * d[2];
-        }
-      for (unsigned int a = 0; a < n_modes; ++a)
-        for (unsigned int b = 0; b < n_modes; ++b)
-          gram(a, b) += v[a] * v[b];
-    };
-    for (const unsigned int r : system.prescribed_rows)
-      add_row(system.rows[r]);
-    for (const unsigned int r : system.contact_rows)
-      // Bilateral rows hold; unilateral contacts and rows with a law of
-      // their own (a stop in free travel) may not.
-      if (!system.rows[r].unilateral && !system.rows[r].law)
-        add_row(system.rows[r]);
+    // Each body on its own (a scene of several bodies): the rows of its
+    // nodes must hold its rigid motions.
+    unsigned int free_modes = 0;
+    for (unsigned int body = 0; body < system.n_bodies; ++body)
+      {
+        dealii::LAPACKFullMatrix<double> gram(n_modes, n_modes);
+        auto add_row = [&](const EquilibriumRow &row) {
+          if (!system.node_body.empty())
+            {
+              const auto it = system.node_body.find(row.node);
+              if (it == system.node_body.end() || it->second != body)
+                return;
+            }
+          const auto           &x = row.node < system.node_coordinates.size() ?
+                                      system.node_coordinates[row.node] :
+                                      centre;
+          std::array<double, 3> r = {{(x[0] - centre[0]) / size,
+                                      (x[1] - centre[1]) / size,
+                                      (x[2] - centre[2]) / size}};
+          // d . m for the modes: translations e_k, rotations (-y, x, 0),
+          // (0, -z, y), (z, 0, -x).
+          std::array<double, 3> d = {{0, 0, 0}};
+          for (unsigned int k = 0; k < row.combination.size() && k < dim; ++k)
+            d[k] = row.direction_component(k);
+          std::vector<double> v(n_modes, 0.);
+          for (unsigned int k = 0; k < dim; ++k)
+            v[k] = d[k];
+          v[dim] = -r[1] * d[0] + r[0] * d[1];
+          if (dim == 3)
+            {
+              v[4] = -r[2] * d[1] + r[1] * d[2];
+              v[5] = r[2] * d[0] - r[0] * d[2];
+            }
+          for (unsigned int a = 0; a < n_modes; ++a)
+            for (unsigned int b = 0; b < n_modes; ++b)
+              gram(a, b) += v[a] * v[b];
+        };
+        for (const unsigned int r : system.prescribed_rows)
+          add_row(system.rows[r]);
+        for (const unsigned int r : system.contact_rows)
+          // Bilateral rows hold; unilateral contacts and rows with a law
+          // of their own (a stop in free travel) may not.
+          if (!system.rows[r].unilateral && !system.rows[r].law)
+            add_row(system.rows[r]);
 
-    dealii::Vector<double>     eigenvalues;
-    dealii::FullMatrix<double> vectors;
-    gram.compute_eigenvalues_symmetric(-1., 1e300, 0., eigenvalues, vectors);
-    double largest = 0;
-    for (unsigned int k = 0; k < eigenvalues.size(); ++k)
-      largest = std::max(largest, eigenvalues[k]);
-    unsigned int free = n_modes - eigenvalues.size();
-    for (unsigned int k = 0; k < eigenvalues.size(); ++k)
-      free += (eigenvalues[k] <= 1e-10 * std::max(largest, 1.));
-    return free;
+        dealii::Vector<double>     eigenvalues;
+        dealii::FullMatrix<double> vectors;
+        gram.compute_eigenvalues_symmetric(
+          -1., 1e300, 0., eigenvalues, vectors);
+        double largest = 0;
+        for (unsigned int k = 0; k < eigenvalues.size(); ++k)
+          largest = std::max(largest, eigenvalues[k]);
+        unsigned int free = n_modes - eigenvalues.size();
+        for (unsigned int k = 0; k < eigenvalues.size(); ++k)
+          free += (eigenvalues[k] <= 1e-10 * std::max(largest, 1.));
+        free_modes += free;
+      }
+    return free_modes;
   }
 } // namespace hrcontact

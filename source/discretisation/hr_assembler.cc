@@ -69,7 +69,6 @@ namespace hrcontact
     // The compliance in the stress basis at each quadrature point:
     // K(c, c') = T_c : C(sigma) T_c', C the material's d^2 phi^c / d sigma^2
     // at the stress state of the point (zero before a solve).
-    const MaterialLaw<dim>              &material = *scene.material;
     FullMatrix<double>                   K(n_comp, n_comp);
     std::vector<SymmetricTensor<2, dim>> T(n_comp);
     for (unsigned int c = 0; c < n_comp; ++c)
@@ -114,8 +113,9 @@ namespace hrcontact
     // Only after a first cell, and only where F_c does not depend on the
     // position or the stresses.
     bool       reuse_blocks = false;
-    const bool may_reuse =
-      !stress_state && !constraint_field && material.is_homogeneous();
+    const bool may_reuse    = !stress_state && !constraint_field;
+    // Each body its own law (Bodies): the cell's material id is its body.
+    types::material_id previous_body = numbers::invalid_material_id;
     // A stress constraint's term at its points (StressConstraintField).
     std::unique_ptr<FEValues<dim>>       fv_vertex;
     FullMatrix<double>                   K_vertex(n_comp, n_comp);
@@ -162,10 +162,14 @@ namespace hrcontact
         // F_c and B_c are the previous cell's to the last bit; only the
         // load, which depends on the position, is integrated again. On the
         // uniform 3D block nearly every cell is one (doc/benchmarks.md).
-        const bool same = reuse_blocks && fv_u.get_cell_similarity() ==
-                                            CellSimilarity::translation;
+        const MaterialLaw<dim> &material = scene.material_of(cu->material_id());
+        const bool              same =
+          reuse_blocks &&
+          fv_u.get_cell_similarity() == CellSimilarity::translation &&
+          cu->material_id() == previous_body;
         blocks.same_as_previous = same;
-        reuse_blocks            = may_reuse;
+        reuse_blocks            = may_reuse && material.is_homogeneous();
+        previous_body           = cu->material_id();
         if (!same)
           {
             Fc = 0;
@@ -550,7 +554,7 @@ namespace hrcontact
       state->update_ghost_values();
     stress_state = state;
     system.cell_strain_term.clear();
-    if (!scene.material->is_linear() || constraint_field)
+    if (!scene.all_linear() || constraint_field)
       system.cell_strain_term.resize(system.n_cells());
     for_each_cell([&](const unsigned int c) { return system.is_stored(c); },
                   [&](const CellBlocks &b) {
@@ -569,11 +573,10 @@ namespace hrcontact
                                  const double       theta,
                                  double            *curvature) const
   {
-    const auto             &fe_s     = *spaces.fe_stress;
-    constexpr unsigned int  n_comp   = MixedSpaces<dim>::n_stress_components;
-    const MaterialLaw<dim> &material = *scene.material;
-    const QGauss<dim>       quadrature(2);
-    FEValues<dim>           fv(fe_s,
+    const auto            &fe_s   = *spaces.fe_stress;
+    constexpr unsigned int n_comp = MixedSpaces<dim>::n_stress_components;
+    const QGauss<dim>      quadrature(2);
+    FEValues<dim>          fv(fe_s,
                      quadrature,
                      update_values | update_quadrature_points |
                        update_JxW_values);
@@ -609,6 +612,8 @@ namespace hrcontact
       {
         if (!cell->is_locally_owned())
           continue;
+        const MaterialLaw<dim> &material =
+          scene.material_of(cell->material_id());
         spaces.cell_values(cell, s0, v0);
         spaces.cell_values(cell, delta, vdelta);
         fv.reinit(cell);
@@ -737,6 +742,7 @@ namespace hrcontact
                 continue;
               BoundaryFace<dim> face;
               face.boundary_id = id;
+              face.body        = cell->material_id();
               for (const auto v : cell->face(f)->vertex_indices())
                 {
                   face.nodes.push_back(cell->face(f)->vertex_dof_index(v, 0) /
@@ -759,6 +765,7 @@ namespace hrcontact
         for (const auto &face : faces)
           {
             packed.push_back(face.boundary_id);
+            packed.push_back(face.body);
             packed.push_back(face.nodes.size());
             for (unsigned int v = 0; v < face.nodes.size(); ++v)
               {
@@ -778,6 +785,7 @@ namespace hrcontact
             {
               BoundaryFace<dim> face;
               face.boundary_id     = static_cast<types::boundary_id>(part[k++]);
+              face.body            = static_cast<unsigned int>(part[k++]);
               const unsigned int n = static_cast<unsigned int>(part[k++]);
               for (unsigned int v = 0; v < n; ++v)
                 {
@@ -805,8 +813,16 @@ namespace hrcontact
         }
     system.node_coordinates.compress(
       parallel_mesh ? parallel_mesh->get_communicator() : MPI_COMM_SELF);
+    system.n_bodies = scene.n_bodies;
+    system.node_body.clear();
+    if (scene.n_bodies > 1)
+      for (const auto &face : faces)
+        for (const unsigned int node : face.nodes)
+          system.node_body[node] = face.body;
 
     // What the constraint kinds ask of each node, face by face.
+    for (const auto &source : scene.constraints)
+      source->prepare(faces, system);
     NodeConstraintMap<dim> constraints;
     for (const auto &face : faces)
       for (const auto &source : scene.constraints)
@@ -848,7 +864,7 @@ namespace hrcontact
     auto classify_node = [&](const unsigned int          node,
                              const NodeConstraints<dim> &c) {
       if (lean_rows && c.obstacles.empty() && !c.own_row_source &&
-          !c.has_normal && c.obstacle < 0 && !c.any_prescribed())
+          !c.has_normal && c.obstacle < 0 && !c.any_prescribed() && !c.coupled)
         {
           // Implicit: the unit rows of the node's dofs.
           system.n_free_rows += dim;
@@ -926,7 +942,11 @@ namespace hrcontact
           Tensor<1, dim> direction;
           for (unsigned int d = 0; d < dim; ++d)
             direction[d] = own.direction[d];
-          add_row(node, direction, RowClass::contact, own.value);
+          add_row(node,
+                  direction,
+                  RowClass::contact,
+                  own.value,
+                  own.unilateral && !own.law);
           system.rows.back().law = own.law;
           taken.push_back(direction);
         }
@@ -996,6 +1016,10 @@ namespace hrcontact
             classify_node(node, it == constraints.end() ? none : it->second);
           }
       }
+    // Rows that couple nodes (contact between bodies) are extended now that
+    // every node has its rows.
+    for (const auto &source : scene.constraints)
+      source->couple_rows(system);
     if (lean_rows)
       system.n_free_rows = system.n_displacement_dofs -
                            system.contact_rows.size() -

@@ -44,8 +44,10 @@ namespace hrcontact
           continue;
         const double f_r = system.row_load(row);
         scale            = std::max(scale, std::abs(f_r));
-        for (unsigned int d = 0; d < dim; ++d)
-          load[d] += f_r * row.direction_component(d);
+        // A row may span several nodes (contact pairs): by component.
+        for (unsigned int k = 0; k < row.combination.size(); ++k)
+          load[system.dof_component(row.combination[k].first)] +=
+            f_r * row.direction_component(k);
       }
     // Lean rows: the implicit free rows are the unit rows of the other dofs.
     for (unsigned int i = 0; i < stored.size(); ++i)
@@ -60,9 +62,11 @@ namespace hrcontact
         scale = Utilities::MPI::max(scale, results.partition.communicator);
       }
     auto add_reaction = [&](const unsigned int r, const double value) {
-      scale = std::max(scale, std::abs(value));
-      for (unsigned int d = 0; d < dim; ++d)
-        reaction[d] += value * system.rows[r].direction_component(d);
+      scale                     = std::max(scale, std::abs(value));
+      const EquilibriumRow &row = system.rows[r];
+      for (unsigned int k = 0; k < row.combination.size(); ++k)
+        reaction[system.dof_component(row.combination[k].first)] +=
+          value * row.direction_component(k);
     };
     for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
       add_reaction(system.contact_rows[k], results.contact_reactions[k]);

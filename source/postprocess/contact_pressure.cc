@@ -29,7 +29,16 @@ namespace hrcontact
     prm.declare_entry("Hertz radius",
                       "",
                       Patterns::Anything(),
-                      "The cylinder radius R of the Hertz comparison.");
+                      "The cylinder radius R of the Hertz comparison; two "
+                      "cylinders: 1/R = 1/R1 + 1/R2.");
+    prm.declare_entry(
+      "Hertz modulus",
+      "",
+      Patterns::Anything(),
+      "The contact modulus E* of the Hertz comparison (an expression of the "
+      "constants); two bodies: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2. "
+      "Empty: E/(1 - nu^2) of the scene's material (a body on a rigid "
+      "obstacle).");
     prm.leave_subsection();
   }
 
@@ -39,8 +48,9 @@ namespace hrcontact
                                          const Constants &)
   {
     prm.enter_subsection("Postprocess");
-    hertz_load   = prm.get("Hertz load");
-    hertz_radius = prm.get("Hertz radius");
+    hertz_load    = prm.get("Hertz load");
+    hertz_radius  = prm.get("Hertz radius");
+    hertz_modulus = prm.get("Hertz modulus");
     prm.leave_subsection();
   }
 
@@ -113,19 +123,28 @@ namespace hrcontact
       return;
     // Plane strain Hertz contact of a cylinder on a rigid plane; the half
     // model's pressed zone starts at the symmetry plane.
-    const double P = evaluate_constant_expression(hertz_load,
+    const double P      = evaluate_constant_expression(hertz_load,
                                                   results.scene.constants,
                                                   "Postprocess/Hertz load");
-    const double R = evaluate_constant_expression(hertz_radius,
+    const double R      = evaluate_constant_expression(hertz_radius,
                                                   results.scene.constants,
                                                   "Postprocess/Hertz radius");
-    const auto  *elastic =
-      dynamic_cast<const LinearElasticity<dim> *>(results.scene.material.get());
-    if (!elastic)
-      throw InputError("Postprocess/Hertz load: the Hertz comparison needs "
-                       "Material/Model = linear elasticity.");
-    const double nu      = elastic->poisson_ratio();
-    const double E_star  = elastic->youngs_modulus() / (1 - nu * nu);
+    double       E_star = 0;
+    if (!Utilities::trim(hertz_modulus).empty())
+      E_star = evaluate_constant_expression(hertz_modulus,
+                                            results.scene.constants,
+                                            "Postprocess/Hertz modulus");
+    else
+      {
+        const auto *elastic = dynamic_cast<const LinearElasticity<dim> *>(
+          results.scene.material.get());
+        if (!elastic)
+          throw InputError("Postprocess/Hertz load: the Hertz comparison "
+                           "needs Material/Model = linear elasticity or a "
+                           "Hertz modulus.");
+        const double nu = elastic->poisson_ratio();
+        E_star          = elastic->youngs_modulus() / (1 - nu * nu);
+      }
     const double a_hertz = std::sqrt(4 * P * R / (numbers::PI * E_star));
     const double p_hertz = 2 * P / (numbers::PI * a_hertz);
     const double a       = zone_end - zone_start;

@@ -79,10 +79,13 @@ namespace hrcontact
       fv.get_function_values(results.stress, values);
       const auto sigma = stress_tensor<dim>(values[0]);
       if (quantity == "von_mises")
-        return von_mises<dim>(sigma, results.scene.out_of_plane_stress(sigma));
+        return von_mises<dim>(
+          sigma,
+          results.scene.out_of_plane_stress(sigma, found.first->material_id()));
       const unsigned int a = quantity[1] - 'x', b = quantity[2] - 'x';
       if (a == 2 && dim == 2)
-        return results.scene.out_of_plane_stress(sigma);
+        return results.scene.out_of_plane_stress(sigma,
+                                                 found.first->material_id());
       return sigma[a][b];
     }
   } // namespace

@@ -56,6 +56,7 @@ namespace hrcontact
         const DataPostprocessorInputs::Vector<dim> &inputs,
         std::vector<Vector<double>> &computed_quantities) const override
       {
+        const auto body = inputs.template get_cell<dim>()->material_id();
         for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
           {
             const auto sigma    = stress_tensor<dim>(inputs.solution_values[q]);
@@ -67,7 +68,8 @@ namespace hrcontact
             const auto ev = eigenvalues(sigma); // descending
             for (unsigned int d = 0; d < dim; ++d)
               out[k++] = ev[d];
-            out[k++] = von_mises<dim>(sigma, scene.out_of_plane_stress(sigma));
+            out[k++] =
+              von_mises<dim>(sigma, scene.out_of_plane_stress(sigma, body));
             // The directions of the largest and the smallest principal
             // stress (for a no-tension body: the crack normal and the
             // strut), as vectors for ParaView's glyphs.

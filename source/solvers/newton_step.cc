@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include <Epetra_CrsMatrix.h>
@@ -627,6 +628,31 @@ namespace hrcontact
             for (const auto j : du)
               dsp.add(i, j);
         });
+      // A Q row over the dofs of several nodes (a contact pair) couples
+      // them through its spring, and holding it expresses one of them by
+      // the others: the entries the condensation fills in are those of
+      // every dof coupled to one of the row's with every dof of the row.
+      for (const unsigned int r : system.contact_rows)
+        {
+          const EquilibriumRow             &row = system.rows[r];
+          std::set<types::global_dof_index> dofs;
+          for (const auto &[dof, c] : row.combination)
+            dofs.insert(dof);
+          if (system.dof_node(*dofs.begin()) == system.dof_node(*dofs.rbegin()))
+            continue;
+          std::set<types::global_dof_index> around = dofs;
+          for (const auto i : dofs)
+            if (dsp.row_index_set().size() == 0 ||
+                dsp.row_index_set().is_element(i))
+              for (auto it = dsp.begin(i); it != dsp.end(i); ++it)
+                around.insert(it->column());
+          for (const auto i : around)
+            for (const auto j : dofs)
+              {
+                dsp.add(i, j);
+                dsp.add(j, i);
+              }
+        }
     };
 
     if (distributed)

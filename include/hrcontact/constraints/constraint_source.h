@@ -58,6 +58,9 @@ namespace hrcontact
      * the boundary id it acts for. */
     const ConstraintSource<dim> *own_row_source   = nullptr;
     int                          own_row_boundary = -1;
+    /** A source will couple the node's rows to those of other nodes
+     * (ConstraintSource::couple_rows): its rows are stored even when lean. */
+    bool coupled = false;
 
     /** Whether some component is prescribed. */
     bool
@@ -83,6 +86,8 @@ namespace hrcontact
   struct BoundaryFace
   {
     dealii::types::boundary_id boundary_id;
+    /** The body of the face's cell (its material id). */
+    unsigned int body = 0;
     /** The face's nodes (EquilibriumSystem numbering) and positions. */
     std::vector<unsigned int>       nodes;
     std::vector<dealii::Point<dim>> points;
@@ -97,6 +102,9 @@ namespace hrcontact
     std::vector<double>                  direction;
     double                               value = 0;
     std::shared_ptr<const ConstraintLaw> law;
+    /** Without a law: unilateral contact (w - g <= 0, p <= 0) rather than
+     * a bilateral constraint w = g. */
+    bool unilateral = false;
   };
 
   /**
@@ -140,6 +148,15 @@ namespace hrcontact
     virtual bool
     is_normal_kind() const;
 
+    /**
+     * Called once with every face of every kind's boundaries before any
+     * collect(): a kind whose rows couple nodes of several faces (contact
+     * pairs) finds its partners here. Does nothing by default.
+     */
+    virtual void
+    prepare(const std::vector<BoundaryFace<dim>> &faces,
+            const EquilibriumSystem              &system) const;
+
     /** Record what it asks of the nodes of one of its faces. */
     virtual void
     collect(const BoundaryFace<dim> &face,
@@ -152,6 +169,19 @@ namespace hrcontact
             const dealii::Point<dim>   &point,
             const NodeConstraints<dim> &constraints,
             const EquilibriumSystem    &system) const;
+
+    /**
+     * After every node's rows are built: extend the rows this kind made to
+     * the dofs of other nodes, keeping the directions and combinations of
+     * all rows biorthogonal (EquilibriumRow). Does nothing by default.
+     */
+    virtual void
+    couple_rows(EquilibriumSystem &system) const;
+
+    /** Whether its rows combine the dofs of several nodes (couple_rows):
+     * such rows run on one process so far. */
+    virtual bool
+    couples_nodes() const;
 
     /** Whether its rows change during the solve (then the null-space path
      * cannot be used). */

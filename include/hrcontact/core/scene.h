@@ -39,9 +39,29 @@ namespace hrcontact
     void
     create_mesh(dealii::Triangulation<dim> &triangulation) const;
 
-    /** The out-of-plane stress of the material (0 in plane stress, 3D). */
+    /** The out-of-plane stress of a body's material (0 in plane stress,
+     * 3D); `body` is the cell's material id. */
     double
-    out_of_plane_stress(const dealii::SymmetricTensor<2, dim> &sigma) const;
+    out_of_plane_stress(const dealii::SymmetricTensor<2, dim> &sigma,
+                        const dealii::types::material_id       body = 0) const;
+
+    /** The law of a body (a cell's material id): its own (Bodies/Body k/
+     * Own material) or the scene's. */
+    const MaterialLaw<dim> &
+    material_of(const dealii::types::material_id body) const;
+
+    /** Whether every body's law is linear. */
+    bool
+    all_linear() const;
+
+    /** The largest nodal compliance of the bodies' laws on this mesh (the
+     * penalty scale of the augmented Lagrangian). */
+    double
+    nodal_compliance(const dealii::Triangulation<dim> &triangulation) const;
+
+    /** Whether the bodies have laws of their own. */
+    bool
+    has_body_materials() const;
 
     /** Human-readable description of the 2D assumption ("3D" in 3D). */
     std::string
@@ -62,6 +82,11 @@ namespace hrcontact
 
     /** The material law (Material/Model), read with the scene. */
     std::shared_ptr<const MaterialLaw<dim>> material;
+    /** By body (material id): a law of its own, or null for the scene's
+     * `material`; empty for a scene of one body. */
+    std::vector<std::shared_ptr<const MaterialLaw<dim>>> body_materials;
+    /** The number of bodies (Bodies/Number of bodies). */
+    unsigned int n_bodies = 1;
     /** The cone of admissible stresses (Material/Admissible stresses), or
      * null: any stress. */
     std::shared_ptr<const StressConstraint<dim>> stress_constraint;

@@ -52,8 +52,9 @@ namespace hrcontact
 
   private:
     const MixedSpaces<dim> &spaces;
-    /** Lame constants of the (plane strain, plane stress or 3D) law. */
-    double lambda = 0, mu = 0;
+    /** Lame constants of the (plane strain, plane stress or 3D) law, by
+     * body (the cell's material id). */
+    std::vector<double> lambda, mu;
   };
 } // namespace hrcontact
 

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -223,6 +224,13 @@ namespace hrcontact
     /** Complete on a serial mesh; on a distributed one this process's
      * nodes and the constrained boundary's (NodeCoordinates). */
     NodeCoordinates node_coordinates;
+    /**
+     * A scene of several bodies (Bodies): the body (cell material id) of
+     * each node of the constrained boundary, so that every body's rigid
+     * motions can be checked on its own; empty for one body.
+     */
+    std::map<unsigned int, unsigned int> node_body;
+    unsigned int                         n_bodies = 1;
 
     /**
      * Lean rows, for the condensed path on large meshes: `rows` holds only

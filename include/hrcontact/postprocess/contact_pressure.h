@@ -29,7 +29,7 @@ namespace hrcontact
     execute(const Results<dim> &results, PostprocessOutput &output) override;
 
   private:
-    std::string hertz_load, hertz_radius;
+    std::string hertz_load, hertz_radius, hertz_modulus;
   };
 } // namespace hrcontact
 

@@ -1,0 +1,76 @@
+#ifndef hrcontact_multi_body_grid_h
+#define hrcontact_multi_body_grid_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+
+#include <hrcontact/core/input.h>
+#include <hrcontact/geometry/mesh_generator.h>
+#include <hrcontact/material/material_law.h>
+
+#include <memory>
+#include <vector>
+
+namespace hrcontact
+{
+  /**
+   * Several bodies in one mesh (issue 19): body 1 is the Geometry
+   * section's grid, bodies 2..4 come from the subsections "Bodies/Body k",
+   * each from its own grid generator, mirrored, rotated about the origin
+   * and shifted.
+   * Each body is generated and refined on its own (with its own manifolds),
+   * flattened, and the bodies are joined without merging their vertices:
+   * bodies that touch share positions but no nodes, and interact only
+   * through contact pairs. Cells carry their body's index (0, 1, ...) as
+   * material id; body k's boundary ids are its generator's plus its offset
+   * (default 10 (k - 1)), so that the bodies' faces stay apart.
+   */
+  template <int dim>
+  class MultiBodyGrid : public MeshGenerator<dim>
+  {
+  public:
+    /** The largest number of bodies a scene may have. */
+    static constexpr unsigned int max_bodies = 4;
+
+    /** Bodies/Number of bodies and the subsections Body 2 ... Body 4. */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /** One body besides the first. */
+    struct Body
+    {
+      std::shared_ptr<const MeshGenerator<dim>> grid;
+      dealii::Tensor<1, dim>                    shift;
+      double                                    rotation_degrees = 0;
+      /** The coordinate the body is mirrored in (x -> -x, ...) before the
+       * rotation, or -1: none. */
+      int          mirror             = -1;
+      unsigned int boundary_id_offset = 0;
+      /** Its own material, or null: the scene's (Material). */
+      std::shared_ptr<const MaterialLaw<dim>> material;
+    };
+
+    /**
+     * The bodies the parameters describe after the first (empty: one body,
+     * the scene is as before).
+     */
+    static std::vector<Body>
+    parse_bodies(dealii::ParameterHandler &prm, const Constants &constants);
+
+    MultiBodyGrid(std::shared_ptr<const MeshGenerator<dim>> first,
+                  std::vector<Body>                         others);
+
+    void
+    create(dealii::Triangulation<dim> &triangulation,
+           const unsigned int          refinements) const override;
+
+    unsigned int
+    n_bodies() const;
+
+  private:
+    std::shared_ptr<const MeshGenerator<dim>> first;
+    std::vector<Body>                         others;
+  };
+} // namespace hrcontact
+
+#endif

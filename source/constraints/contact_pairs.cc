@@ -1,0 +1,503 @@
+#include <deal.II/base/utilities.h>
+
+#include <hrcontact/constraints/contact_pairs.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /**
+     * The bilinear (2D: linear) shape functions of a face at the reference
+     * point xi, in deal.II's vertex order, and their derivatives.
+     */
+    template <int dim>
+    void
+    face_shape(const std::array<double, dim - 1>        &xi,
+               std::vector<double>                      &N,
+               std::vector<std::array<double, dim - 1>> &dN)
+    {
+      if constexpr (dim == 2)
+        {
+          N  = {1 - xi[0], xi[0]};
+          dN = {{{-1.}}, {{1.}}};
+        }
+      else
+        {
+          const double a = xi[0], b = xi[1];
+          N  = {(1 - a) * (1 - b), a * (1 - b), (1 - a) * b, a * b};
+          dN = {{{-(1 - b), -(1 - a)}},
+                {{(1 - b), -a}},
+                {{-b, (1 - a)}},
+                {{b, a}}};
+        }
+    }
+
+    /**
+     * The closest point of a face to x: Gauss-Newton on the face's
+     * parametrisation (one step for a straight segment, a few for a
+     * bilinear quadrilateral), unclamped. Returns the reference point.
+     */
+    template <int dim>
+    std::array<double, dim - 1>
+    closest_point(const std::vector<Point<dim>> &vertices, const Point<dim> &x)
+    {
+      std::array<double, dim - 1>              xi;
+      std::vector<double>                      N;
+      std::vector<std::array<double, dim - 1>> dN;
+      xi.fill(0.5);
+      for (unsigned int it = 0; it < 20; ++it)
+        {
+          face_shape<dim>(xi, N, dN);
+          Point<dim>                          y;
+          std::array<Tensor<1, dim>, dim - 1> t;
+          for (unsigned int v = 0; v < vertices.size(); ++v)
+            {
+              y += N[v] * vertices[v];
+              for (unsigned int a = 0; a < dim - 1; ++a)
+                t[a] += dN[v][a] * vertices[v];
+            }
+          const Tensor<1, dim> r = x - y;
+          // The normal equations (t_a . t_b) dxi_b = t_a . r.
+          double step[2] = {0, 0};
+          if constexpr (dim == 2)
+            step[0] = (t[0] * r) / (t[0] * t[0]);
+          else
+            {
+              const double g11 = t[0] * t[0], g12 = t[0] * t[1],
+                           g22 = t[1] * t[1];
+              const double b1 = t[0] * r, b2 = t[1] * r;
+              const double det = g11 * g22 - g12 * g12;
+              step[0]          = (g22 * b1 - g12 * b2) / det;
+              step[1]          = (g11 * b2 - g12 * b1) / det;
+            }
+          double change = 0;
+          for (unsigned int a = 0; a < dim - 1; ++a)
+            {
+              xi[a] += step[a];
+              change = std::max(change, std::abs(step[a]));
+            }
+          if (change < 1e-14)
+            break;
+        }
+      return xi;
+    }
+
+    std::string
+    pair_name(const unsigned int slave, const unsigned int master)
+    {
+      return "Contact/Contact pairs, pair " + std::to_string(slave) + " : " +
+             std::to_string(master);
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactPairs<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry(
+      "Contact pairs",
+      "",
+      Patterns::Anything(),
+      "Frictionless unilateral contact between deformable bodies, node to "
+      "segment: 'slave id : master id [: reach]', entries separated by '|', "
+      "e.g. '12 : 3'. Each node of the slave boundary is projected onto the "
+      "closest face of the master boundary that faces it; its row "
+      "constrains the relative normal displacement (u_slave - sum N_m "
+      "u_master).n <= g, n the master face's inward normal, g the gap on "
+      "the undeformed surfaces, and its reaction p <= 0 acts on the slave "
+      "node and, through the face's shape functions N_m, equal and opposite "
+      "on the master nodes. Slave nodes farther than the reach from the "
+      "master surface (an expression of the constants; default: a tenth of "
+      "the master boundary's bounding box diagonal) get no row: it must "
+      "exceed the gap at the edge of the contact zone. Bodies that overlap at the start, or "
+      "a slave boundary with no master face in reach, stop with an error. "
+      "Matching meshes give node-to-node rows. Serial runs (one process). "
+      "Empty: none.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  std::string
+  ContactPairs<dim>::entry() const
+  {
+    return "Contact/Contact pairs";
+  }
+
+  template <int dim>
+  bool
+  ContactPairs<dim>::acts_on(const types::boundary_id id) const
+  {
+    return std::any_of(pairs.begin(), pairs.end(), [id](const Pair &p) {
+      return p.slave == id || p.master == id;
+    });
+  }
+
+  template <int dim>
+  bool
+  ContactPairs<dim>::parse_parameters(
+    ParameterHandler                                          &prm,
+    const Constants                                           &constants,
+    const std::vector<std::shared_ptr<ConstraintSource<dim>>> &earlier)
+  {
+    prm.enter_subsection("Contact");
+    const std::string text = prm.get("Contact pairs");
+    prm.leave_subsection();
+    pairs.clear();
+    std::set<types::boundary_id> used;
+    for (const std::string &item : split_and_trim(text, '|'))
+      {
+        if (item.empty())
+          {
+            if (Utilities::trim(text).empty())
+              break;
+            throw InputError("Contact/Contact pairs: an empty entry in '" +
+                             text + "'.");
+          }
+        const auto parts = split_and_trim(item, ':');
+        if (parts.size() != 2 && parts.size() != 3)
+          throw InputError("Contact/Contact pairs: expected 'slave id : "
+                           "master id [: reach]' in '" +
+                           item + "'.");
+        unsigned int ids[2];
+        for (unsigned int k = 0; k < 2; ++k)
+          {
+            std::size_t end = 0;
+            int         id  = -1;
+            try
+              {
+                id = std::stoi(parts[k], &end);
+              }
+            catch (const std::exception &)
+              {
+                end = 0;
+              }
+            if (end == 0 || end != parts[k].size() || id < 0 ||
+                static_cast<types::boundary_id>(id) >=
+                  numbers::internal_face_boundary_id)
+              throw InputError("Contact/Contact pairs: '" + parts[k] +
+                               "' in '" + item + "' is not a boundary id.");
+            ids[k] = id;
+          }
+        Pair pair;
+        pair.slave       = ids[0];
+        pair.master      = ids[1];
+        const auto where = pair_name(pair.slave, pair.master);
+        if (pair.slave == pair.master)
+          throw InputError(where + ": a boundary cannot touch itself.");
+        for (const auto id : {pair.slave, pair.master})
+          {
+            if (!used.insert(id).second)
+              throw InputError(where + ": boundary " + std::to_string(id) +
+                               " is in another pair already.");
+            require_unconstrained<dim>(
+              id,
+              where,
+              earlier,
+              "a normal constraint, an obstacle, a boundary support or a "
+              "stop");
+          }
+        if (parts.size() == 3)
+          {
+            pair.reach =
+              evaluate_constant_expression(parts[2], constants, where);
+            if (!(pair.reach > 0))
+              throw InputError(where + ": the reach must be positive.");
+          }
+        pairs.push_back(pair);
+      }
+    return !pairs.empty();
+  }
+
+  template <int dim>
+  void
+  ContactPairs<dim>::prepare(const std::vector<BoundaryFace<dim>> &faces,
+                             const EquilibriumSystem              &system) const
+  {
+    projections.clear();
+    std::set<unsigned int> all_masters;
+    for (const Pair &pair : pairs)
+      for (const auto &face : faces)
+        if (face.boundary_id == pair.master)
+          all_masters.insert(face.nodes.begin(), face.nodes.end());
+
+    for (unsigned int k = 0; k < pairs.size(); ++k)
+      {
+        const Pair       &pair  = pairs[k];
+        const std::string where = pair_name(pair.slave, pair.master);
+        std::vector<const BoundaryFace<dim> *> masters;
+        // The slave nodes, their positions and area-weighted normals.
+        std::map<unsigned int, std::pair<Point<dim>, Tensor<1, dim>>> slaves;
+        for (const auto &face : faces)
+          if (face.boundary_id == pair.master)
+            masters.push_back(&face);
+          else if (face.boundary_id == pair.slave)
+            for (unsigned int v = 0; v < face.nodes.size(); ++v)
+              {
+                auto &s = slaves[face.nodes[v]];
+                s.first = face.points[v];
+                s.second += face.measure * face.normal;
+              }
+        if (masters.empty())
+          throw InputError(where +
+                           ": the mesh has no face with the master "
+                           "boundary id " +
+                           std::to_string(pair.master) + ".");
+        if (slaves.empty())
+          throw InputError(where +
+                           ": the mesh has no face with the slave "
+                           "boundary id " +
+                           std::to_string(pair.slave) + ".");
+
+        // The default reach: a tenth of the master boundary's size, far
+        // more than the gap at the edge of any contact zone the small
+        // deformation theory describes.
+        double reach = pair.reach;
+        if (!(reach > 0))
+          {
+            Point<dim> low = masters.front()->points.front(), high = low;
+            for (const BoundaryFace<dim> *face : masters)
+              for (const auto &x : face->points)
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    low[d]  = std::min(low[d], x[d]);
+                    high[d] = std::max(high[d], x[d]);
+                  }
+            reach = 0.1 * low.distance(high);
+          }
+        unsigned int found = 0;
+        for (const auto &[node, slave] : slaves)
+          {
+            const Point<dim> &x = slave.first;
+            if (all_masters.count(node))
+              throw InputError(where + ": " + system.describe_node(node) +
+                               " is on a slave and a master boundary.");
+            double     best = std::numeric_limits<double>::max();
+            Projection projection;
+            for (const BoundaryFace<dim> *face : masters)
+              {
+                // Only faces that face the slave node.
+                if (!(face->normal * slave.second < 0))
+                  continue;
+                const auto   xi     = closest_point<dim>(face->points, x);
+                const double tol    = 1e-8;
+                bool         inside = true;
+                for (const double a : xi)
+                  inside &= (a >= -tol && a <= 1 + tol);
+                if (!inside)
+                  continue;
+                std::array<double, dim - 1> clamped;
+                for (unsigned int a = 0; a < dim - 1; ++a)
+                  clamped[a] = std::clamp(xi[a], 0., 1.);
+                std::vector<double>                      N;
+                std::vector<std::array<double, dim - 1>> dN;
+                face_shape<dim>(clamped, N, dN);
+                Point<dim> y;
+                double     length = 0;
+                for (unsigned int v = 0; v < face->points.size(); ++v)
+                  {
+                    y += N[v] * face->points[v];
+                    length =
+                      std::max(length,
+                               face->points[v].distance(
+                                 face->points[(v + 1) % face->points.size()]));
+                  }
+                const double distance = x.distance(y);
+                if (distance > reach || distance >= best)
+                  continue;
+                best              = distance;
+                projection.pair   = k;
+                projection.normal = -face->normal;
+                projection.gap    = (y - x) * projection.normal;
+                projection.master_nodes.clear();
+                projection.shape_values.clear();
+                for (unsigned int v = 0; v < face->nodes.size(); ++v)
+                  if (std::abs(N[v]) > 1e-12)
+                    {
+                      projection.master_nodes.push_back(face->nodes[v]);
+                      projection.shape_values.push_back(N[v]);
+                    }
+                if (projection.gap < -1e-8 * length)
+                  {
+                    std::ostringstream s;
+                    s << where << ": the bodies overlap at the start: "
+                      << system.describe_node(node) << " lies "
+                      << -projection.gap
+                      << " inside the master boundary. Place the bodies so "
+                         "that the slave surface does not enter the master "
+                         "body.";
+                    throw InputError(s.str());
+                  }
+                projection.gap = std::max(projection.gap, 0.);
+              }
+            if (best == std::numeric_limits<double>::max())
+              continue;
+            if (!projections.emplace(node, projection).second)
+              throw InputError(where + ": " + system.describe_node(node) +
+                               " is a slave node of two pairs.");
+            ++found;
+          }
+        if (found == 0)
+          throw InputError(
+            where +
+            ": no node of the slave boundary has a face of the master "
+            "boundary in reach" +
+            " (" + std::to_string(reach) + ")" +
+            ": the bodies are too far apart, the boundaries do not face each "
+            "other, or the ids are swapped.");
+      }
+  }
+
+  template <int dim>
+  void
+  ContactPairs<dim>::collect(const BoundaryFace<dim> &face,
+                             const EquilibriumSystem &system,
+                             NodeConstraintMap<dim>  &nodes) const
+  {
+    for (const Pair &pair : pairs)
+      if (face.boundary_id == pair.master)
+        for (const unsigned int node : face.nodes)
+          nodes[node].coupled = true;
+      else if (face.boundary_id == pair.slave)
+        for (const unsigned int node : face.nodes)
+          if (projections.count(node))
+            {
+              NodeConstraints<dim> &c = nodes[node];
+              if (c.own_row_source && c.own_row_source != this)
+                throw InputError(pair_name(pair.slave, pair.master) + ": " +
+                                 system.describe_node(node) +
+                                 " also has a stop.");
+              c.own_row_source   = this;
+              c.own_row_boundary = face.boundary_id;
+            }
+  }
+
+  template <int dim>
+  OwnRow
+  ContactPairs<dim>::own_row(const unsigned int node,
+                             const Point<dim> &,
+                             const NodeConstraints<dim> &constraints,
+                             const EquilibriumSystem    &system) const
+  {
+    Projection       &projection = projections.at(node);
+    const Pair       &pair       = pairs[projection.pair];
+    const std::string where =
+      pair_name(pair.slave, pair.master) + ", " + system.describe_node(node);
+    if (constraints.has_normal || constraints.obstacle >= 0)
+      throw InputError(where + ": the node also has a normal constraint, an "
+                               "obstacle or a boundary support.");
+    // Prescribed components at the slave node (a symmetry plane at the end
+    // of the interface): as for obstacles, the row constrains the free part
+    // of the normal, n_free . (u_s - sum N_m u_m) <= g, scaled to a unit
+    // direction; the same direction acts at the master nodes.
+    Tensor<1, dim> n_free = projection.normal;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (constraints.prescribed[d])
+        {
+          projection.gap -= n_free[d] * constraints.prescribed_value[d];
+          n_free[d] = 0;
+        }
+    if (n_free.norm() < 1e-8)
+      throw InputError(where + ": every component along the contact normal "
+                               "is prescribed.");
+    projection.gap /= n_free.norm();
+    projection.normal = n_free / n_free.norm();
+    OwnRow row;
+    for (unsigned int d = 0; d < dim; ++d)
+      row.direction.push_back(projection.normal[d]);
+    row.value      = projection.gap;
+    row.unilateral = true;
+    return row;
+  }
+
+  template <int dim>
+  void
+  ContactPairs<dim>::couple_rows(EquilibriumSystem &system) const
+  {
+    // The rows of the nodes involved.
+    std::map<unsigned int, std::vector<unsigned int>> rows_of;
+    for (const auto &[slave, projection] : projections)
+      {
+        rows_of[slave];
+        for (const unsigned int m : projection.master_nodes)
+          rows_of[m];
+      }
+    for (unsigned int r = 0; r < system.rows.size(); ++r)
+      {
+        const auto it = rows_of.find(system.rows[r].node);
+        if (it != rows_of.end())
+          it->second.push_back(r);
+      }
+    auto explicit_direction = [](EquilibriumRow &row) {
+      if (row.direction.empty())
+        for (const auto &[dof, c] : row.combination)
+          row.direction.push_back(c);
+    };
+    auto dof = [&](const unsigned int node, const unsigned int d) {
+      return types::global_dof_index(dim) * node + d;
+    };
+    for (const auto &[slave, projection] : projections)
+      {
+        const Tensor<1, dim> &n = projection.normal;
+        // The slave's contact row: d = (n at the slave, -N_m n at master m).
+        EquilibriumRow *q = nullptr;
+        for (const unsigned int r : rows_of.at(slave))
+          if (system.rows[r].row_class == RowClass::contact)
+            q = &system.rows[r];
+        AssertThrow(q != nullptr, ExcInternalError());
+        explicit_direction(*q);
+        for (unsigned int i = 0; i < projection.master_nodes.size(); ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              q->combination.emplace_back(dof(projection.master_nodes[i], d),
+                                          0.);
+              q->direction.push_back(-projection.shape_values[i] * n[d]);
+            }
+        // Every row r of a master node m: c_r . d_q = 0 needs the slave's
+        // normal row alpha n in c_r, alpha = N_m (c_r at m) . n; the
+        // directions are unchanged (zero at the slave), so the other
+        // products stay as they were.
+        for (unsigned int i = 0; i < projection.master_nodes.size(); ++i)
+          {
+            const unsigned int m = projection.master_nodes[i];
+            for (const unsigned int r : rows_of.at(m))
+              {
+                EquilibriumRow &row   = system.rows[r];
+                double          alpha = 0;
+                for (const auto &[j, c] : row.combination)
+                  if (system.dof_node(j) == m)
+                    alpha += c * n[system.dof_component(j)];
+                alpha *= projection.shape_values[i];
+                if (alpha == 0)
+                  continue;
+                explicit_direction(row);
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    row.combination.emplace_back(dof(slave, d), alpha * n[d]);
+                    row.direction.push_back(0.);
+                  }
+              }
+          }
+      }
+  }
+
+  template <int dim>
+  bool
+  ContactPairs<dim>::couples_nodes() const
+  {
+    return true;
+  }
+
+  template class ContactPairs<2>;
+  template class ContactPairs<3>;
+
+  HRCONTACT_REGISTER_CONSTRAINT_SOURCE(ContactPairs, 70)
+} // namespace hrcontact
