@@ -57,11 +57,10 @@ namespace hrcontact
         fv.reinit(cell);
         cell->get_dof_indices(dofs);
         // One body: whatever material ids the grid generator set.
-        const unsigned int body =
-          this->mu.size() > 1 ? cell->material_id() : 0;
-        const double lambda = this->lambda.at(body);
-        const double mu     = this->mu.at(body);
-        K                   = 0;
+        const unsigned int body = this->mu.size() > 1 ? cell->material_id() : 0;
+        const double       lambda = this->lambda.at(body);
+        const double       mu     = this->mu.at(body);
+        K                         = 0;
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           {
             for (unsigned int i = 0; i < n; ++i)
