@@ -25,6 +25,8 @@ main()
                                  "displacement-al-null-space",
                                  "nested-too-deep",
                                  "nested-malformed",
+                                 "bodies-overlap",
+                                 "pair-out-of-reach",
                                  "no-such-file"})
     {
       std::filesystem::remove_all("should-not-exist");

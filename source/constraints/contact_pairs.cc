@@ -350,7 +350,13 @@ namespace hrcontact
             where +
             ": no node of the slave boundary has a face of the master "
             "boundary in reach" +
-            " (" + std::to_string(reach) + ")" +
+            " (" +
+            [reach] {
+              std::ostringstream s;
+              s << reach;
+              return s.str();
+            }() +
+            ")" +
             ": the bodies are too far apart, the boundaries do not face each "
             "other, or the ids are swapped.");
       }
