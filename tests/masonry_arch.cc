@@ -1,0 +1,81 @@
+// The no-tension masonry arch (parameters/masonry-arch.prm at 192 cells):
+// the constraint iteration converges; no cell centre carries tension (the
+// largest principal stress at most 1e-6 of the largest compression, where
+// the cone is imposed); the support reactions balance self-weight and load;
+// the springing under the load is pressed across its width, the far one
+// only at its extrados node (a hinge).
+
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <hrcontact/postprocess/field_values.h>
+
+#include "tests.h"
+
+using namespace dealii;
+
+int
+main()
+{
+  const auto problem = hrcontact_tests::solve_from_text<2>(
+    hrcontact_tests::read_file(std::string(SOURCE_DIR) +
+                               "/../parameters/masonry-arch.prm") +
+    "subsection Geometry\n  set Global refinements = 2\nend\n"
+    "subsection Output\n  set Write solution = false\n"
+    "  set Output directory = results\nend\n");
+  const auto &r   = problem->results();
+  const auto &sys = r.system;
+  std::cout << "converged: " << (r.converged() ? "yes" : "NO") << std::endl;
+
+  double largest_tension = -1e300, largest_compression = 0;
+  for (const auto &cell : r.triangulation().active_cell_iterators())
+    {
+      SymmetricTensor<2, 2> s;
+      s[0][0]             = hrcontact::point_value(r, cell->center(), "sxx");
+      s[1][1]             = hrcontact::point_value(r, cell->center(), "syy");
+      s[0][1]             = hrcontact::point_value(r, cell->center(), "sxy");
+      const auto ev       = eigenvalues(s);
+      largest_tension     = std::max(largest_tension, ev[0]);
+      largest_compression = std::max(largest_compression, -ev[1]);
+    }
+  std::cout << "no tension at the cell centres (1e-6 of the largest "
+               "compression): "
+            << hrcontact_tests::check(largest_tension / largest_compression,
+                                      1e-6)
+            << std::endl;
+
+  double load = 0, reaction = 0;
+  for (unsigned int i = 1; i < sys.n_displacement_dofs; i += 2)
+    load += sys.load[i];
+  auto add = [&](const hrcontact::EquilibriumRow &row, const double p) {
+    for (unsigned int k = 0; k < row.combination.size(); ++k)
+      if (sys.dof_component(row.combination[k].first) == 1)
+        reaction += p * row.direction_component(k);
+  };
+  unsigned int left_pressed = 0, left = 0, right_pressed = 0;
+  double       right_pressed_x = 0;
+  for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
+    {
+      const auto &row = sys.rows[sys.contact_rows[k]];
+      add(row, r.contact_reactions[k]);
+      const double x       = sys.node_coordinates[row.node][0];
+      const bool   pressed = !r.contact->released[k];
+      if (x < 0)
+        {
+          ++left;
+          left_pressed += pressed;
+        }
+      else if (pressed)
+        {
+          ++right_pressed;
+          right_pressed_x = x;
+        }
+    }
+  for (unsigned int k = 0; k < sys.prescribed_rows.size(); ++k)
+    add(sys.rows[sys.prescribed_rows[k]], r.support_reactions[k]);
+  std::cout << "vertical load " << std::setprecision(6) << -load
+            << ", support reactions balance it (1e-10): "
+            << hrcontact_tests::check(std::abs(load + reaction) / -load, 1e-10)
+            << "\nloaded springing: " << left_pressed << " of " << left
+            << " nodes pressed\nfar springing: " << right_pressed
+            << " node(s) pressed, at x = " << right_pressed_x << std::endl;
+}
