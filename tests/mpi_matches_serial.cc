@@ -4,8 +4,9 @@
 // CG (or MUMPS for Solver = direct) are distributed, and the contact rows
 // are classified from the gathered boundary faces. Each scene is solved on
 // MPI_COMM_WORLD and, on every process, serially on MPI_COMM_SELF: unilateral
-// contact (Hertz, lift-off, the 3D block), two-sided stops (the bridge) and
-// curved obstacles that follow the configuration (the cylinder). The two
+// contact (Hertz, lift-off, the 3D block), two-sided stops (the bridge),
+// curved obstacles that follow the configuration (the cylinder) and contact
+// pairs between two deformable bodies (a block on a block, two cylinders). The two
 // number dofs, rows and cells differently (p4est orders the distributed
 // one), so they are matched by position: the rows by node and direction,
 // the nodes by coordinates, the cells by centre. They must give the same
@@ -159,10 +160,14 @@ compare(const std::string &scene, const std::string &extra)
   // Displacements, node by node: each process its own nodes (a distributed
   // mesh keeps only their coordinates, and the distributed displacements
   // only the owned and ghost dofs), matched to the serial nodes by position.
+  // Bodies in contact share positions, not nodes: the body tells them apart
+  // (known at the nodes of the constrained boundary, where they touch).
   auto node_key = [](const hrcontact::EquilibriumSystem &system,
                      const unsigned int                  node) {
-    const auto &x = system.node_coordinates[node];
-    return Key{{x[0], x[1], x[2], 0, 0, 0}};
+    const auto  &x    = system.node_coordinates[node];
+    const auto   it   = system.node_body.find(node);
+    const double body = it == system.node_body.end() ? -1. : it->second;
+    return Key{{x[0], x[1], x[2], body, 0, 0}};
   };
   std::vector<Key>          serial_keys, own_keys;
   std::vector<unsigned int> own_nodes;
@@ -262,6 +267,14 @@ main(int argc, char **argv)
   compare<2>("cylinder-indentation.prm",
              "subsection Geometry\n  set Global refinements = 4\nend\n"
              "subsection Linear solver\n  set Solver = direct\nend\n");
+  // Contact between two deformable bodies: p4est puts each body on its
+  // own process, so every pair row spans both.
+  compare<2>("stacked-blocks-lift-off.prm",
+             "subsection Equilibrium reduction\n  set Path = condensed\nend\n"
+             "subsection Linear solver\n  set Solver = direct\nend\n");
+  compare<2>("two-cylinders.prm",
+             "subsection Geometry\n  set Global refinements = 3\nend\n"
+             "subsection Linear solver\n  set Solver = cg-amg\nend\n");
   compare<3>("block-3d-contact.prm",
              "subsection Geometry\n  set Global refinements = 1\nend\n"
              "subsection Linear solver\n  set Solver = cg-amg\nend\n");

@@ -62,13 +62,6 @@ namespace hrcontact
 
   template <int dim>
   bool
-  ConstraintSource<dim>::couples_nodes() const
-  {
-    return false;
-  }
-
-  template <int dim>
-  bool
   ConstraintSource<dim>::changes_rows() const
   {
     return false;

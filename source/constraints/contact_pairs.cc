@@ -120,7 +120,7 @@ namespace hrcontact
       "the master boundary's bounding box diagonal) get no row: it must "
       "exceed the gap at the edge of the contact zone. Bodies that overlap at the start, or "
       "a slave boundary with no master face in reach, stop with an error. "
-      "Matching meshes give node-to-node rows. Serial runs (one process). "
+      "Matching meshes give node-to-node rows. "
       "Empty: none.");
     prm.leave_subsection();
   }
@@ -493,13 +493,6 @@ namespace hrcontact
               }
           }
       }
-  }
-
-  template <int dim>
-  bool
-  ContactPairs<dim>::couples_nodes() const
-  {
-    return true;
   }
 
   template class ContactPairs<2>;

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <map>
 #include <sstream>
 
 namespace hrcontact
@@ -77,11 +78,6 @@ namespace hrcontact
         Utilities::MPI::job_supports_mpi() ?
           Utilities::MPI::n_mpi_processes(mpi_communicator) :
           1;
-      for (const auto &source : scene.constraints)
-        if (n_processes > 1 && source->couples_nodes())
-          throw InputError(source->entry() +
-                           ": rows that couple the nodes of two bodies run "
-                           "on one process so far; run without mpirun.");
       replicated_mesh_reason =
         reduction.path == "null-space" ? "the null-space path" :
         scene.distortion != 0          ? "Geometry/Distortion" :
@@ -144,6 +140,24 @@ namespace hrcontact
          dense_reduction_bytes(spaces.dof_handler_displacement.n_dofs()) >
            reduction.automatic_dense_limit);
       HRAssembler<dim>(scene, spaces).classify_rows(system, lean_rows);
+      // Rows over the nodes of two bodies (contact pairs): the process that
+      // owns a row's node also reads and writes the row's other dofs
+      // (w = d . u, the held row's constraint, the master rows' fill-in),
+      // so they join its relevant dofs. A surface's worth, like the rows.
+      if (partition.distributed())
+        {
+          std::vector<types::global_dof_index> coupled;
+          for (const auto &row : system.rows)
+            if (system.dof_node(row.combination.front().first) !=
+                system.dof_node(row.combination.back().first))
+              for (const auto &[dof, c] : row.combination)
+                coupled.push_back(dof);
+          std::sort(coupled.begin(), coupled.end());
+          coupled.erase(std::unique(coupled.begin(), coupled.end()),
+                        coupled.end());
+          partition.relevant.add_indices(coupled.begin(), coupled.end());
+          partition.relevant.compress();
+        }
     }
     mark_memory("row classification");
     log << "  rows: " << system.n_free_rows << " free (C), "
@@ -662,14 +676,57 @@ namespace hrcontact
     path.displacements(r.contact_w, r.displacement);
     // The reactions B~_r s - f~_r, each computed by the owner of its node
     // (on a distributed mesh only it has every cell around the node).
+    // Several processes: a master node's row may hold alpha n at a slave
+    // node of a contact pair (ContactPairs::couple_rows), whose cells its
+    // owner does not have; that part is alpha times the pair row's p (the
+    // slave's other rows are free: no residual), from the Q rows first.
+    std::map<unsigned int, unsigned int> pair_row_at;
+    if (partition.distributed())
+      for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
+        {
+          const EquilibriumRow &row = system.rows[system.contact_rows[k]];
+          if (system.dof_node(row.combination.front().first) !=
+              system.dof_node(row.combination.back().first))
+            pair_row_at[row.node] = k;
+        }
     auto reactions = [&](const std::vector<unsigned int> &rows,
                          std::vector<double>             &values) {
       values.assign(rows.size(), 0.);
       for (unsigned int k = 0; k < rows.size(); ++k)
         {
           const EquilibriumRow &row = system.rows[rows[k]];
-          if (partition.owned.is_element(row.combination.front().first))
-            values[k] = system.row_times(row, unknowns) - system.row_load(row);
+          if (!partition.owned.is_element(row.combination.front().first))
+            continue;
+          if (pair_row_at.empty())
+            {
+              values[k] =
+                system.row_times(row, unknowns) - system.row_load(row);
+              continue;
+            }
+          EquilibriumRow own = row, other;
+          own.combination.clear();
+          own.direction.clear();
+          std::map<unsigned int, double> alpha;
+          for (unsigned int e = 0; e < row.combination.size(); ++e)
+            {
+              const auto [dof, c] = row.combination[e];
+              if (c == 0) // a pair row's master entries
+                continue;
+              if (system.dof_node(dof) == row.node)
+                own.combination.emplace_back(dof, c);
+              else
+                {
+                  const unsigned int    slave = system.dof_node(dof);
+                  const EquilibriumRow &q =
+                    system.rows[system.contact_rows[pair_row_at.at(slave)]];
+                  // c = alpha n over the slave's dofs; n = d_q there.
+                  alpha[slave] +=
+                    c * q.direction_component(system.dof_component(dof));
+                }
+            }
+          values[k] = system.row_times(own, unknowns) - system.row_load(own);
+          for (const auto &[slave, a] : alpha)
+            values[k] += a * r.contact_reactions[pair_row_at.at(slave)];
         }
       if (partition.distributed())
         Utilities::MPI::sum(values, partition.communicator, values);

@@ -714,6 +714,19 @@ namespace hrcontact
         changing.add(std::vector<types::global_dof_index>(kept_dofs.begin(),
                                                           kept_dofs.end()),
                      std::vector<double>(kept_dofs.size(), 1.));
+        // A held contact pair row condenses its slave's couplings into the
+        // master's rows, on whichever process owns them.
+        for (const unsigned int r : system.contact_rows)
+          {
+            const EquilibriumRow &row = system.rows[r];
+            if (system.dof_node(row.combination.front().first) ==
+                  system.dof_node(row.combination.back().first) ||
+                !partition.owned.is_element(row.combination.front().first))
+              continue;
+            for (const auto &[dof, c] : row.combination)
+              changing.add(std::vector<types::global_dof_index>{dof},
+                           std::vector<double>{1.});
+          }
         changing.compress(VectorOperation::add);
         const Epetra_Map &rows = fixed.trilinos_matrix().RowMap();
         distributed->changing_rows.clear();
@@ -788,10 +801,11 @@ namespace hrcontact
     for (const unsigned int r : system.contact_rows)
       if (owned_row(system.rows[r]))
         for (const auto &[dof, c] : system.rows[r].combination)
-          for (auto it = system.B.begin(system.b_row(dof));
-               it != system.B.end(system.b_row(dof));
-               ++it)
-            position.emplace(it->column(), none);
+          if (c != 0) // a contact pair's master entries
+            for (auto it = system.B.begin(system.b_row(dof));
+                 it != system.B.end(system.b_row(dof));
+                 ++it)
+              position.emplace(it->column(), none);
     for (unsigned int k = 0; k < recovery_cells.size(); ++k)
       {
         const auto &ds = system.cell_stress_dofs[recovery_cells[k]];
@@ -812,6 +826,8 @@ namespace hrcontact
           for (unsigned int k = 0; k < row.combination.size(); ++k)
             {
               const auto dof = row.combination[k].first;
+              if (row.combination[k].second == 0)
+                continue;
               for (auto it = system.B.begin(system.b_row(dof));
                    it != system.B.end(system.b_row(dof));
                    ++it)

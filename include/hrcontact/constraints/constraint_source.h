@@ -178,11 +178,6 @@ namespace hrcontact
     virtual void
     couple_rows(EquilibriumSystem &system) const;
 
-    /** Whether its rows combine the dofs of several nodes (couple_rows):
-     * such rows run on one process so far. */
-    virtual bool
-    couples_nodes() const;
-
     /** Whether its rows change during the solve (then the null-space path
      * cannot be used). */
     virtual bool

@@ -59,8 +59,6 @@ namespace hrcontact
             const EquilibriumSystem    &system) const override;
     void
     couple_rows(EquilibriumSystem &system) const override;
-    bool
-    couples_nodes() const override;
 
     /** One pair as the `.prm` gives it. */
     struct Pair
