@@ -6,8 +6,8 @@
 // MPI_COMM_WORLD and, on every process, serially on MPI_COMM_SELF: unilateral
 // contact (Hertz, lift-off, the 3D block), two-sided stops (the bridge),
 // curved obstacles that follow the configuration (the cylinder) and contact
-// pairs between two deformable bodies (a block on a block, two cylinders). The two
-// number dofs, rows and cells differently (p4est orders the distributed
+// pairs between two deformable bodies (a block on a block, two cylinders). The
+// two number dofs, rows and cells differently (p4est orders the distributed
 // one), so they are matched by position: the rows by node and direction,
 // the nodes by coordinates, the cells by centre. They must give the same
 // augmented Lagrangian history (alpha sequence to 1e-12, released sets, p to
