@@ -6,12 +6,12 @@
 // MPI_COMM_WORLD and, on every process, serially on MPI_COMM_SELF: unilateral
 // contact (Hertz, lift-off, the 3D block), two-sided stops (the bridge),
 // curved obstacles that follow the configuration (the cylinder) and contact
-// pairs between two deformable bodies (a block on a block, two cylinders). The
-// two number dofs, rows and cells differently (p4est orders the distributed
-// one), so they are matched by position: the rows by node and direction,
-// the nodes by coordinates, the cells by centre. They must give the same
-// augmented Lagrangian history (alpha sequence to 1e-12, released sets, p to
-// 1e-9 of max |p|) and the same displacements and stresses (each process
+// pairs between two deformable bodies (a block on a block, two cylinders, two
+// boxes in 3D). The two number dofs, rows and cells differently (p4est orders
+// the distributed one), so they are matched by position: the rows by node and
+// direction, the nodes by coordinates, the cells by centre. They must give the
+// same augmented Lagrangian history (alpha sequence to 1e-12, released sets, p
+// to 1e-9 of max |p|) and the same displacements and stresses (each process
 // compares its own cells). The partition must give every dof and cell
 // exactly one owner and each process a share.
 
@@ -274,6 +274,8 @@ main(int argc, char **argv)
              "subsection Linear solver\n  set Solver = direct\nend\n");
   compare<2>("two-cylinders.prm",
              "subsection Geometry\n  set Global refinements = 3\nend\n"
+             "subsection Linear solver\n  set Solver = cg-amg\nend\n");
+  compare<3>("stacked-boxes-3d.prm",
              "subsection Linear solver\n  set Solver = cg-amg\nend\n");
   compare<3>("block-3d-contact.prm",
              "subsection Geometry\n  set Global refinements = 1\nend\n"
