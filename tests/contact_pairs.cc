@@ -62,10 +62,7 @@ balance(const hrcontact::Results<2> &r)
   for (unsigned int i = 0; i < sys.n_displacement_dofs; ++i)
     total[i % 2] += sys.load[i];
   auto add = [&](const hrcontact::EquilibriumRow &row, const double p) {
-    double sum[2] = {0, 0};
-    for (unsigned int k = 0; k < row.combination.size(); ++k)
-      sum[sys.dof_component(row.combination[k].first)] +=
-        p * row.direction_component(k);
+    const auto sum = hrcontact_tests::row_force(sys, row, p);
     for (unsigned int d = 0; d < 2; ++d)
       total[d] += sum[d];
     largest = std::max(largest, std::abs(p));

@@ -3,7 +3,8 @@
 // block under an eccentric load with partial lift-off, on rectangular
 // matching grids, where HR with DGQ1 stresses is the Q1 displacement
 // problem (tests/hr_equals_q1). Here: both blocks' Q1 stiffness assembled
-// from their Lame constants, the traction integrated on the top face, the
+// from their Lame constants (tests.h's assemble_q1_elasticity, a modulus
+// per body), the traction integrated on the top face, the
 // node-to-node gap rows u_s,y >= u_m,y, and a primal-dual active set
 // iteration of the test's own (each step a sparse direct solve with the
 // active rows as constraints u_s,y = u_m,y). Displacements and contact
@@ -97,60 +98,22 @@ main()
       sp.copy_from(dsp);
       SparseMatrix<double> K(sp);
       Vector<double>       f(n);
-      const QGauss<2>      quadrature(2);
-      const QGauss<1>      face_quadrature(2);
-      FEValues<2>     fv(fe, quadrature, update_gradients | update_JxW_values);
-      FEFaceValues<2> fv_face(fe,
-                              face_quadrature,
-                              update_values | update_quadrature_points |
-                                update_JxW_values);
-      const unsigned int                   nc = fe.n_dofs_per_cell();
-      FullMatrix<double>                   Kc(nc, nc);
-      Vector<double>                       fc(nc);
-      std::vector<types::global_dof_index> dofs(nc);
-      for (const auto &cell : dh.active_cell_iterators())
-        {
-          const double e      = E[cell->material_id()];
-          const double lambda = e * nu / ((1 + nu) * (1 - 2 * nu));
-          const double mu     = e / (2 * (1 + nu));
-          fv.reinit(cell);
-          Kc = 0;
-          fc = 0;
-          for (unsigned int k = 0; k < quadrature.size(); ++k)
-            for (unsigned int i = 0; i < nc; ++i)
-              for (unsigned int j = 0; j < nc; ++j)
-                {
-                  const unsigned int a  = fe.system_to_component_index(i).first;
-                  const unsigned int b  = fe.system_to_component_index(j).first;
-                  const Tensor<1, 2> gi = fv.shape_grad(i, k);
-                  const Tensor<1, 2> gj = fv.shape_grad(j, k);
-                  // lambda div div + mu (grad:grad + grad:grad^T)
-                  Kc(i, j) += (lambda * gi[a] * gj[b] + mu * gi[b] * gj[a] +
-                               (a == b ? mu * (gi * gj) : 0.)) *
-                              fv.JxW(k);
-                }
-          for (const auto face : cell->face_indices())
-            if (cell->face(face)->at_boundary() &&
-                cell->face(face)->boundary_id() == 13)
-              {
-                fv_face.reinit(cell, face);
-                for (unsigned int k = 0; k < face_quadrature.size(); ++k)
-                  {
-                    const double t =
-                      fv_face.quadrature_point(k)[0] > 0.75 * W ? -q : 0.;
-                    for (unsigned int i = 0; i < nc; ++i)
-                      if (fe.system_to_component_index(i).first == 1)
-                        fc(i) += fv_face.shape_value(i, k) * t * fv_face.JxW(k);
-                  }
-              }
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < nc; ++i)
-            {
-              f(dofs[i]) += fc(i);
-              for (unsigned int j = 0; j < nc; ++j)
-                K.add(dofs[i], dofs[j], Kc(i, j));
-            }
-        }
+      // K and f unconstrained (the reactions are K u - f): both blocks'
+      // moduli by material id, q on the top's right quarter.
+      AffineConstraints<double> none;
+      none.close();
+      hrcontact_tests::assemble_q1_elasticity(
+        dh,
+        E[0],
+        nu,
+        "0; 0",
+        {{13,
+          "0; (x > " + std::to_string(0.75 * W) + ") ? " + std::to_string(-q) +
+            " : 0"}},
+        none,
+        K,
+        f,
+        {E[0], E[1]});
 
       // Primal-dual active set: start with every pair pressed.
       std::vector<bool> active(pairs.size(), true);

@@ -47,9 +47,7 @@ main()
   for (unsigned int i = 1; i < sys.n_displacement_dofs; i += 2)
     load += sys.load[i];
   auto add = [&](const hrcontact::EquilibriumRow &row, const double p) {
-    for (unsigned int k = 0; k < row.combination.size(); ++k)
-      if (sys.dof_component(row.combination[k].first) == 1)
-        reaction += p * row.direction_component(k);
+    reaction += hrcontact_tests::row_force(sys, row, p)[1];
   };
   unsigned int left_pressed = 0, left = 0, right_pressed = 0;
   double       right_pressed_x = 0;

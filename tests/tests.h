@@ -9,6 +9,7 @@
 #include <hrcontact/core/run.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -219,7 +220,8 @@ namespace hrcontact_tests
    * The standard Q1 displacement stiffness of linear plane-strain elasticity
    * (Lame constants) and the load vector of a body force and per-boundary
    * tractions, assembled independently of the library, constraints applied
-   * as deal.II does (distribute_local_to_global).
+   * as deal.II does (distribute_local_to_global). Several bodies: a
+   * modulus per cell material id in `E_by_body` (E is then not used).
    */
   inline void
   assemble_q1_elasticity(
@@ -230,12 +232,11 @@ namespace hrcontact_tests
     const std::map<dealii::types::boundary_id, std::string> &tractions,
     const dealii::AffineConstraints<double>                 &constraints,
     dealii::SparseMatrix<double>                            &K,
-    dealii::Vector<double>                                  &rhs)
+    dealii::Vector<double>                                  &rhs,
+    const std::vector<double>                               &E_by_body = {})
   {
     using namespace dealii;
-    const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)); // plane strain
-    const double mu     = E / (2 * (1 + nu));
-    const auto  &fe     = dh.get_fe();
+    const auto       &fe = dh.get_fe();
     FunctionParser<2> body(2);
     body.initialize("x,y", body_force, {});
     std::map<types::boundary_id, std::unique_ptr<FunctionParser<2>>> traction;
@@ -262,6 +263,11 @@ namespace hrcontact_tests
     rhs = 0;
     for (const auto &cell : dh.active_cell_iterators())
       {
+        const double e =
+          E_by_body.empty() ? E : E_by_body.at(cell->material_id());
+        const double lambda =
+          e * nu / ((1 + nu) * (1 - 2 * nu)); // plane strain
+        const double mu = e / (2 * (1 + nu));
         fv.reinit(cell);
         Kc = 0;
         fc = 0;
@@ -303,6 +309,26 @@ namespace hrcontact_tests
         cell->get_dof_indices(dofs);
         constraints.distribute_local_to_global(Kc, fc, dofs, K, rhs);
       }
+  }
+} // namespace hrcontact_tests
+
+namespace hrcontact_tests
+{
+  /**
+   * The force a row's value (reaction) exerts, by component, summed over
+   * all of the row's dofs: a contact pair's row spans two bodies, and its
+   * force sums to zero (the balance report sums alike).
+   */
+  inline std::array<double, 3>
+  row_force(const hrcontact::EquilibriumSystem &system,
+            const hrcontact::EquilibriumRow    &row,
+            const double                        value)
+  {
+    std::array<double, 3> force = {{0., 0., 0.}};
+    for (unsigned int k = 0; k < row.combination.size(); ++k)
+      force[system.dof_component(row.combination[k].first)] +=
+        value * row.direction_component(k);
+    return force;
   }
 } // namespace hrcontact_tests
 

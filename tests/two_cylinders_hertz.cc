@@ -45,10 +45,7 @@ main()
       for (unsigned int i = 0; i < sys.n_displacement_dofs; ++i)
         total[i % 2] += sys.load[i];
       auto add = [&](const hrcontact::EquilibriumRow &row, const double p) {
-        double sum[2] = {0, 0};
-        for (unsigned int k = 0; k < row.combination.size(); ++k)
-          sum[sys.dof_component(row.combination[k].first)] +=
-            p * row.direction_component(k);
+        const auto sum = hrcontact_tests::row_force(sys, row, p);
         total[0] += sum[0];
         total[1] += sum[1];
         largest = std::max(largest, std::abs(p));

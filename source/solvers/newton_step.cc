@@ -634,12 +634,13 @@ namespace hrcontact
       // every dof coupled to one of the row's with every dof of the row.
       for (const unsigned int r : system.contact_rows)
         {
-          const EquilibriumRow             &row = system.rows[r];
+          const EquilibriumRow &row = system.rows[r];
+          if (system.dof_node(row.combination.front().first) ==
+              system.dof_node(row.combination.back().first))
+            continue;
           std::set<types::global_dof_index> dofs;
           for (const auto &[dof, c] : row.combination)
             dofs.insert(dof);
-          if (system.dof_node(*dofs.begin()) == system.dof_node(*dofs.rbegin()))
-            continue;
           std::set<types::global_dof_index> around = dofs;
           for (const auto i : dofs)
             if (dsp.row_index_set().size() == 0 ||
