@@ -12,47 +12,48 @@ namespace hrcontact
 
   namespace
   {
-    void
-    half_cylinder(Triangulation<2>  &tria,
-                  const std::string &arguments,
-                  const unsigned int refinements)
+    struct HalfCylinderArguments
+    {
+      double R = 1, phi_c = 0.1, q = 1;
+    };
+
+    HalfCylinderArguments
+    read_arguments(const std::string &arguments)
     {
       const auto parts = split_and_trim(arguments, ':');
       if (parts.size() != 3)
         throw InputError(
           "Geometry: half_cylinder takes 'R : phi_c : q' (radius, angle in "
           "radians of the finely meshed arc, radial grading exponent).");
-      const double R = std::stod(parts[0]), phi_c = std::stod(parts[1]),
-                   q = std::stod(parts[2]);
-      if (!(R > 0) || !(phi_c > 0) || !(phi_c <= numbers::PI / 4) || !(q >= 1))
+      HalfCylinderArguments a;
+      try
+        {
+          a.R     = std::stod(parts[0]);
+          a.phi_c = std::stod(parts[1]);
+          a.q     = std::stod(parts[2]);
+        }
+      catch (const std::invalid_argument &)
+        {
+          throw InputError("Geometry: cannot read the half_cylinder "
+                           "arguments '" +
+                           arguments + "' as 'R : phi_c : q'.");
+        }
+      if (!(a.R > 0) || !(a.phi_c > 0) || !(a.phi_c <= numbers::PI / 4) ||
+          !(a.q >= 1))
         throw InputError("Geometry: half_cylinder needs R > 0, 0 < phi_c <= "
                          "pi/4 and q >= 1.");
-      GridGenerator::quarter_hyper_ball(tria, Point<2>(), R);
+      return a;
+    }
+
+    /** The quarter disk x >= 0, y <= 0 of three cells, its arc on a
+     * spherical manifold, with the boundary ids. */
+    void
+    coarse_half_cylinder(Triangulation<2> &tria, const HalfCylinderArguments &a)
+    {
+      GridGenerator::quarter_hyper_ball(tria, Point<2>(), a.R);
       GridTools::transform(
         [](const Point<2> &x) { return Point<2>(x[1], -x[0]); }, tria);
-      tria.refine_global(refinements);
-      GridTools::transform(
-        [R, phi_c, q](const Point<2> &x) {
-          const double r = x.norm();
-          if (r == 0)
-            return x;
-          const double phi     = std::atan2(x[0], -x[1]); // from -y towards +x
-          const double half_pi = numbers::PI / 2;
-          const double t       = std::min(1., std::max(0., phi / half_pi));
-          // phi(t) = 2 phi_c t on [0, 1/2]; then the same slope plus a
-          // quadratic term reaching pi/2 at t = 1.
-          const double c       = (half_pi - 2 * phi_c) / 0.25;
-          const double phi_new = (t <= 0.5) ? 2 * phi_c * t :
-                                              phi_c + 2 * phi_c * (t - 0.5) +
-                                                c * (t - 0.5) * (t - 0.5);
-          const double r_new   = R * (1 - std::pow(std::max(0., 1 - r / R), q));
-          return Point<2>(r_new * std::sin(phi_new),
-                          -r_new * std::cos(phi_new));
-        },
-        tria);
-      tria.reset_all_manifolds();
-      tria.set_all_manifold_ids(numbers::flat_manifold_id);
-      const double tol = 1e-10 * R;
+      const double tol = 1e-10 * a.R;
       for (const auto &cell : tria.active_cell_iterators())
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary())
@@ -62,6 +63,40 @@ namespace hrcontact
                                              std::abs(c[1]) < tol ? 1 :
                                                                     2);
             }
+    }
+
+    /** The grading: a polar map that keeps the circle. */
+    Point<2>
+    graded(const Point<2> &x, const HalfCylinderArguments &a)
+    {
+      const double r = x.norm();
+      if (r == 0)
+        return x;
+      const double phi     = std::atan2(x[0], -x[1]); // from -y towards +x
+      const double half_pi = numbers::PI / 2;
+      const double t       = std::min(1., std::max(0., phi / half_pi));
+      // phi(t) = 2 phi_c t on [0, 1/2]; then the same slope plus a
+      // quadratic term reaching pi/2 at t = 1.
+      const double c       = (half_pi - 2 * a.phi_c) / 0.25;
+      const double phi_new = (t <= 0.5) ? 2 * a.phi_c * t :
+                                          a.phi_c + 2 * a.phi_c * (t - 0.5) +
+                                            c * (t - 0.5) * (t - 0.5);
+      const double r_new = a.R * (1 - std::pow(std::max(0., 1 - r / a.R), a.q));
+      return Point<2>(r_new * std::sin(phi_new), -r_new * std::cos(phi_new));
+    }
+
+    void
+    half_cylinder(Triangulation<2>  &tria,
+                  const std::string &arguments,
+                  const unsigned int refinements)
+    {
+      const HalfCylinderArguments a = read_arguments(arguments);
+      coarse_half_cylinder(tria, a);
+      tria.refine_global(refinements);
+      GridTools::transform([&a](const Point<2> &x) { return graded(x, a); },
+                           tria);
+      tria.reset_all_manifolds();
+      tria.set_all_manifold_ids(numbers::flat_manifold_id);
     }
 
     template <int dim>
@@ -83,16 +118,30 @@ namespace hrcontact
   HalfCylinderGrid<dim>::create(Triangulation<dim> &triangulation,
                                 const unsigned int  refinements) const
   {
-    try
-      {
-        half_cylinder(triangulation, arguments, refinements);
-      }
-    catch (const std::invalid_argument &)
-      {
-        throw InputError("Geometry: cannot read the half_cylinder "
-                         "arguments '" +
-                         arguments + "' as 'R : phi_c : q'.");
-      }
+    half_cylinder(triangulation, arguments, refinements);
+  }
+
+  template <int dim>
+  bool
+  HalfCylinderGrid<dim>::create_coarse(Triangulation<dim> &triangulation) const
+  {
+    if constexpr (dim == 2)
+      coarse_half_cylinder(triangulation, read_arguments(arguments));
+    else
+      half_cylinder(triangulation, arguments, 0);
+    return true;
+  }
+
+  template <int dim>
+  std::function<Point<dim>(const Point<dim> &)>
+  HalfCylinderGrid<dim>::refined_vertex_map() const
+  {
+    if constexpr (dim == 2)
+      return [a = read_arguments(arguments)](const Point<dim> &x) {
+        return graded(x, a);
+      };
+    else
+      return MeshGenerator<dim>::refined_vertex_map();
   }
 
   template class HalfCylinderGrid<2>;

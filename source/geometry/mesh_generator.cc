@@ -18,6 +18,20 @@ namespace hrcontact
     return "";
   }
 
+  template <int dim>
+  bool
+  MeshGenerator<dim>::create_coarse(Triangulation<dim> &) const
+  {
+    return false;
+  }
+
+  template <int dim>
+  std::function<Point<dim>(const Point<dim> &)>
+  MeshGenerator<dim>::refined_vertex_map() const
+  {
+    return [](const Point<dim> &x) { return x; };
+  }
+
   namespace
   {
     /** Any deal.II GridGenerator function by name and arguments. */
@@ -33,6 +47,13 @@ namespace hrcontact
       void
       create(Triangulation<dim> &triangulation,
              const unsigned int  refinements) const override
+      {
+        create_coarse(triangulation);
+        triangulation.refine_global(refinements);
+      }
+
+      bool
+      create_coarse(Triangulation<dim> &triangulation) const override
       {
         try
           {
@@ -56,7 +77,7 @@ namespace hrcontact
           }
         if (triangulation.n_active_cells() == 0)
           throw InputError("Geometry: the grid has no cells.");
-        triangulation.refine_global(refinements);
+        return true;
       }
 
     private:

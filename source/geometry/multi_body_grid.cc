@@ -2,10 +2,14 @@
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+
+#include <deal.II/distributed/tria.h>
 
 #include <hrcontact/geometry/multi_body_grid.h>
 
 #include <cmath>
+#include <map>
 #include <set>
 #include <utility>
 
@@ -100,7 +104,7 @@ namespace hrcontact
         if (!body.grid->fixed_geometry_reason().empty())
           throw InputError(where + ": " + body.grid->fixed_geometry_reason() +
                            ".");
-        body.rotation_degrees =
+        body.placement.rotation_degrees =
           evaluate_constant_expression(prm.get("Rotation angle"),
                                        constants,
                                        where + "/Rotation angle");
@@ -113,14 +117,15 @@ namespace hrcontact
                 where + "/Shift: expected " + std::to_string(dim) +
                 " components separated by ',' in '" + shift + "'.");
             for (unsigned int d = 0; d < dim; ++d)
-              body.shift[d] = evaluate_constant_expression(parts[d],
-                                                           constants,
-                                                           where + "/Shift");
+              body.placement.shift[d] =
+                evaluate_constant_expression(parts[d],
+                                             constants,
+                                             where + "/Shift");
           }
         body.boundary_id_offset  = prm.get_integer("Boundary id offset");
         const std::string mirror = prm.get("Mirror");
-        body.mirror              = mirror == "none" ? -1 : mirror[0] - 'x';
-        if (body.mirror >= static_cast<int>(dim))
+        body.placement.mirror    = mirror == "none" ? -1 : mirror[0] - 'x';
+        if (body.placement.mirror >= static_cast<int>(dim))
           throw InputError(where + "/Mirror: a " + std::to_string(dim) +
                            "D body has no coordinate " + mirror + ".");
         if (prm.get_bool("Own material"))
@@ -148,82 +153,88 @@ namespace hrcontact
   }
 
   template <int dim>
-  void
-  MultiBodyGrid<dim>::create(Triangulation<dim> &triangulation,
-                             const unsigned int  refinements) const
+  const MeshGenerator<dim> &
+  MultiBodyGrid<dim>::grid_of(const unsigned int b) const
   {
-    std::vector<Point<dim>>    vertices;
-    std::vector<CellData<dim>> cells;
-    SubCellData                faces;
-    // Boundary ids by body, to refuse two bodies with the same id.
-    std::vector<std::set<types::boundary_id>> ids(n_bodies());
-    for (unsigned int b = 0; b < n_bodies(); ++b)
+    return b == 0 ? *first : *others[b - 1].grid;
+  }
+
+  template <int dim>
+  BodyPlacement<dim>
+  MultiBodyGrid<dim>::placement_of(const unsigned int b) const
+  {
+    return b == 0 ? BodyPlacement<dim>() : others[b - 1].placement;
+  }
+
+  namespace
+  {
+    /**
+     * The coarse description of several bodies: each body's cells, faces
+     * and vertices appended with its material id (the body), its boundary
+     * ids shifted, and mirrored cells turned right again.
+     */
+    template <int dim>
+    struct JoinedDescription
+    {
+      std::vector<Point<dim>>    vertices;
+      std::vector<CellData<dim>> cells;
+      SubCellData                faces;
+      /** Boundary ids by body, to refuse two bodies with the same id. */
+      std::vector<std::set<types::boundary_id>> ids;
+
+      /** Append `body`, already placed; manifold ids through `manifold`. */
+      void
+      append(const Triangulation<dim>                               &body,
+             const unsigned int                                      b,
+             const unsigned int                                      offset,
+             const bool                                              mirrored,
+             const std::map<types::manifold_id, types::manifold_id> &manifold)
       {
-        // Generated and refined alone (its manifolds place the new
-        // vertices), then flattened: the joined mesh is one level.
-        Triangulation<dim> body, flat;
-        (b == 0 ? first : others[b - 1].grid)->create(body, refinements);
-        GridGenerator::flatten_triangulation(body, flat);
-        unsigned int offset = 0;
-        if (b > 0)
-          {
-            const Body  &o     = others[b - 1];
-            const double angle = o.rotation_degrees * numbers::PI / 180.;
-            const double c = std::cos(angle), s = std::sin(angle);
-            const Tensor<1, dim> shift  = o.shift;
-            const int            mirror = o.mirror;
-            GridTools::transform(
-              [c, s, shift, mirror](Point<dim> p) {
-                if (mirror >= 0)
-                  p[mirror] = -p[mirror];
-                Point<dim> q = p;
-                q[0]         = c * p[0] - s * p[1];
-                q[1]         = s * p[0] + c * p[1];
-                return q + shift;
-              },
-              flat);
-            offset = o.boundary_id_offset;
-          }
-        auto [v, c, sub] = GridTools::get_coarse_mesh_description(flat);
+        auto map_manifold = [&manifold](const types::manifold_id id) {
+          const auto it = manifold.find(id);
+          return it == manifold.end() ? numbers::flat_manifold_id : it->second;
+        };
+        auto [v, c, sub] = GridTools::get_coarse_mesh_description(body);
         const unsigned int first_vertex = vertices.size();
         vertices.insert(vertices.end(), v.begin(), v.end());
-        const bool mirrored = b > 0 && others[b - 1].mirror >= 0;
         for (auto &cell : c)
           {
             for (auto &i : cell.vertices)
               i += first_vertex;
-            // A mirror image is inside out: reverse the first reference
-            // direction to turn it right again.
+            // A mirror image is inside out: exchange the first two
+            // reference directions to turn it right again (a reversal of
+            // one direction would also reverse the lines along it, which
+            // then disagree with their neighbours' on refinement).
             if (mirrored)
-              for (unsigned int v = 0; v < cell.vertices.size(); v += 2)
+              for (unsigned int v = 1; v < cell.vertices.size(); v += 4)
                 std::swap(cell.vertices[v], cell.vertices[v + 1]);
             cell.material_id = b;
-            cell.manifold_id = numbers::flat_manifold_id;
+            cell.manifold_id = map_manifold(cell.manifold_id);
             cells.push_back(cell);
           }
-        auto shift_ids =
-          [&](auto &list, auto &target, const bool faces_of_cells) {
-            for (auto &face : list)
-              {
-                for (auto &i : face.vertices)
-                  i += first_vertex;
-                face.manifold_id = numbers::flat_manifold_id;
-                if (face.boundary_id != numbers::internal_face_boundary_id)
-                  {
-                    const unsigned int id = face.boundary_id + offset;
-                    if (id >= numbers::internal_face_boundary_id)
-                      throw InputError(
-                        "Bodies/Body " + std::to_string(b + 1) +
-                        ": boundary id " + std::to_string(face.boundary_id) +
-                        " plus the offset " + std::to_string(offset) +
-                        " is not a valid boundary id.");
-                    face.boundary_id = id;
-                    if (faces_of_cells)
-                      ids[b].insert(id);
-                  }
-                target.push_back(face);
-              }
-          };
+        ids.resize(b + 1);
+        auto shift_ids = [&](auto &list, auto &target, const bool of_cells) {
+          for (auto &face : list)
+            {
+              for (auto &i : face.vertices)
+                i += first_vertex;
+              face.manifold_id = map_manifold(face.manifold_id);
+              if (face.boundary_id != numbers::internal_face_boundary_id)
+                {
+                  const unsigned int id = face.boundary_id + offset;
+                  if (id >= numbers::internal_face_boundary_id)
+                    throw InputError(
+                      "Bodies/Body " + std::to_string(b + 1) +
+                      ": boundary id " + std::to_string(face.boundary_id) +
+                      " plus the offset " + std::to_string(offset) +
+                      " is not a valid boundary id.");
+                  face.boundary_id = id;
+                  if (of_cells)
+                    ids[b].insert(id);
+                }
+              target.push_back(face);
+            }
+        };
         shift_ids(sub.boundary_lines, faces.boundary_lines, dim == 2);
         shift_ids(sub.boundary_quads, faces.boundary_quads, dim == 3);
         for (unsigned int a = 0; a < b; ++a)
@@ -235,7 +246,109 @@ namespace hrcontact
                 std::to_string(a + 1) +
                 "'s; give the body a different Boundary id offset.");
       }
-    triangulation.create_triangulation(vertices, cells, faces);
+    };
+  } // namespace
+
+  template <int dim>
+  void
+  MultiBodyGrid<dim>::create(Triangulation<dim> &triangulation,
+                             const unsigned int  refinements) const
+  {
+    if (dynamic_cast<parallel::distributed::Triangulation<dim> *>(
+          &triangulation) &&
+        create_from_coarse_meshes(triangulation, refinements))
+      return;
+
+    JoinedDescription<dim> joined;
+    for (unsigned int b = 0; b < n_bodies(); ++b)
+      {
+        // Generated and refined alone (its manifolds place the new
+        // vertices), then flattened: the joined mesh is one level.
+        Triangulation<dim> body, flat;
+        grid_of(b).create(body, refinements);
+        GridGenerator::flatten_triangulation(body, flat);
+        const BodyPlacement<dim> placement = placement_of(b);
+        if (b > 0)
+          GridTools::transform(placement, flat);
+        joined.append(flat,
+                      b,
+                      b == 0 ? 0 : others[b - 1].boundary_id_offset,
+                      placement.mirrors(),
+                      {});
+      }
+    triangulation.create_triangulation(joined.vertices,
+                                       joined.cells,
+                                       joined.faces);
+  }
+
+  template <int dim>
+  bool
+  MultiBodyGrid<dim>::create_from_coarse_meshes(
+    Triangulation<dim> &triangulation,
+    const unsigned int  refinements) const
+  {
+    JoinedDescription<dim> joined;
+    // The bodies' manifolds, moved, under new ids (body b's id i becomes
+    // 1000 b + i + 1, clear of the flat manifold id).
+    std::vector<std::pair<types::manifold_id, std::unique_ptr<Manifold<dim>>>>
+      manifolds;
+    for (unsigned int b = 0; b < n_bodies(); ++b)
+      {
+        Triangulation<dim> body;
+        if (!grid_of(b).create_coarse(body))
+          return false;
+        const BodyPlacement<dim> placement = placement_of(b);
+        std::map<types::manifold_id, types::manifold_id> manifold_ids;
+        for (const types::manifold_id id : body.get_manifold_ids())
+          if (id != numbers::flat_manifold_id)
+            {
+              const Manifold<dim> &manifold = body.get_manifold(id);
+              // Manifolds that hold their own triangulation cannot move to
+              // another one.
+              if (dynamic_cast<const TransfiniteInterpolationManifold<dim> *>(
+                    &manifold))
+                return false;
+              if (dynamic_cast<const FlatManifold<dim> *>(&manifold))
+                continue;
+              manifold_ids[id] = 1000 * b + id + 1;
+              manifolds.emplace_back(
+                1000 * b + id + 1,
+                std::make_unique<MovedManifold<dim>>(manifold, placement));
+            }
+        GridTools::transform(placement, body);
+        joined.append(body,
+                      b,
+                      b == 0 ? 0 : others[b - 1].boundary_id_offset,
+                      placement.mirrors(),
+                      manifold_ids);
+      }
+    triangulation.create_triangulation(joined.vertices,
+                                       joined.cells,
+                                       joined.faces);
+    for (const auto &[id, manifold] : manifolds)
+      triangulation.set_manifold(id, *manifold);
+    triangulation.refine_global(refinements);
+
+    // Each body's map of the refined vertices, in its own frame.
+    std::vector<std::function<Point<dim>(const Point<dim> &)>> maps;
+    for (unsigned int b = 0; b < n_bodies(); ++b)
+      maps.push_back(grid_of(b).refined_vertex_map());
+    std::vector<bool> moved(triangulation.n_vertices(), false);
+    for (const auto &cell : triangulation.cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        if (!moved[cell->vertex_index(v)])
+          {
+            const unsigned int       b         = cell->material_id();
+            const BodyPlacement<dim> placement = placement_of(b);
+            cell->vertex(v) =
+              placement(maps[b](placement.inverse(cell->vertex(v))));
+            moved[cell->vertex_index(v)] = true;
+          }
+    // As the joined refined bodies: flat, the manifolds placed the points.
+    triangulation.reset_all_manifolds();
+    triangulation.set_all_manifold_ids(numbers::flat_manifold_id);
+    triangulation.signals.mesh_movement();
+    return true;
   }
 
   template class MultiBodyGrid<2>;

@@ -24,6 +24,11 @@ namespace hrcontact
     void
     create(dealii::Triangulation<dim> &triangulation,
            const unsigned int          refinements) const override;
+    bool
+    create_coarse(dealii::Triangulation<dim> &triangulation) const override;
+    /** The grading map. */
+    std::function<dealii::Point<dim>(const dealii::Point<dim> &)>
+    refined_vertex_map() const override;
 
   private:
     const std::string arguments;

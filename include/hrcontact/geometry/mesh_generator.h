@@ -32,6 +32,21 @@ namespace hrcontact
            const unsigned int          refinements) const = 0;
 
     /**
+     * The coarse mesh with the manifolds its refinement needs, where the
+     * grid can be built in three steps: create(t, r) places the same
+     * vertices as create_coarse(t), t.refine_global(r) and then moving
+     * every vertex x to refined_vertex_map()(x). Returns false (the default)
+     * when the grid cannot: MultiBodyGrid then joins refined bodies, which a
+     * distributed mesh takes as its coarse mesh on every process.
+     */
+    virtual bool
+    create_coarse(dealii::Triangulation<dim> &triangulation) const;
+
+    /** Where a vertex of the refined coarse mesh goes (default: it stays). */
+    virtual std::function<dealii::Point<dim>(const dealii::Point<dim> &)>
+    refined_vertex_map() const;
+
+    /**
      * Why this grid may not be distorted or rotated afterwards (empty: it
      * may), for the error message.
      */

@@ -5,6 +5,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <hrcontact/core/input.h>
+#include <hrcontact/geometry/body_placement.h>
 #include <hrcontact/geometry/mesh_generator.h>
 #include <hrcontact/material/material_law.h>
 
@@ -18,8 +19,13 @@ namespace hrcontact
    * section's grid, bodies 2..4 come from the subsections "Bodies/Body k",
    * each from its own grid generator, mirrored, rotated about the origin
    * and shifted.
-   * Each body is generated and refined on its own (with its own manifolds),
-   * flattened, and the bodies are joined without merging their vertices:
+   * On a distributed mesh, where every body's grid has a coarse mesh
+   * (MeshGenerator::create_coarse), the bodies' coarse meshes are placed
+   * and joined, their manifolds carried along (MovedManifold), and the
+   * joined mesh is refined: each process keeps only its part. Otherwise
+   * each body is generated and refined on its own (with its own manifolds),
+   * flattened, placed, and the refined bodies are joined. Either way the
+   * bodies' vertices are not merged:
    * bodies that touch share positions but no nodes, and interact only
    * through contact pairs. Cells carry their body's index (0, 1, ...) as
    * material id; body k's boundary ids are its generator's plus its offset
@@ -40,12 +46,8 @@ namespace hrcontact
     struct Body
     {
       std::shared_ptr<const MeshGenerator<dim>> grid;
-      dealii::Tensor<1, dim>                    shift;
-      double                                    rotation_degrees = 0;
-      /** The coordinate the body is mirrored in (x -> -x, ...) before the
-       * rotation, or -1: none. */
-      int          mirror             = -1;
-      unsigned int boundary_id_offset = 0;
+      BodyPlacement<dim>                        placement;
+      unsigned int                              boundary_id_offset = 0;
       /** Its own material, or null: the scene's (Material). */
       std::shared_ptr<const MaterialLaw<dim>> material;
     };
@@ -68,6 +70,20 @@ namespace hrcontact
     n_bodies() const;
 
   private:
+    /** Body b's grid, placement (identity for the first) and offset. */
+    const MeshGenerator<dim> &
+    grid_of(const unsigned int b) const;
+    BodyPlacement<dim>
+    placement_of(const unsigned int b) const;
+
+    /**
+     * The distributed variant: false (nothing done) when a body's grid has
+     * no coarse mesh or one of its manifolds cannot be moved.
+     */
+    bool
+    create_from_coarse_meshes(dealii::Triangulation<dim> &triangulation,
+                              const unsigned int          refinements) const;
+
     std::shared_ptr<const MeshGenerator<dim>> first;
     std::vector<Body>                         others;
   };
