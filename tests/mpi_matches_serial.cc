@@ -272,6 +272,13 @@ main(int argc, char **argv)
   compare<2>("stacked-blocks-lift-off.prm",
              "subsection Equilibrium reduction\n  set Path = condensed\nend\n"
              "subsection Linear solver\n  set Solver = direct\nend\n");
+  // The same with the lifting part tethered (a two-sided stop on the
+  // pair: opening 1e-6, then a stiffness branch).
+  compare<2>("stacked-blocks-lift-off.prm",
+             "subsection Equilibrium reduction\n  set Path = condensed\nend\n"
+             "subsection Contact\n  set Pair laws = 12: stop : -1e-6 : 0 : "
+             "-1e20 : 1e3 : 0 : 1e10\nend\n"
+             "subsection Linear solver\n  set Solver = direct\nend\n");
   compare<2>("two-cylinders.prm",
              "subsection Geometry\n  set Global refinements = 3\nend\n"
              "subsection Linear solver\n  set Solver = cg-amg\nend\n");

@@ -122,6 +122,24 @@ namespace hrcontact
       "a slave boundary with no master face in reach, stop with an error. "
       "Matching meshes give node-to-node rows. "
       "Empty: none.");
+    prm.declare_entry(
+      "Pair laws",
+      "",
+      Patterns::Anything(),
+      "Another law than unilateral contact for a pair, by its slave id, "
+      "entries separated by '|': 'id: bilateral' or 'id: stop : g- : g+ : "
+      "p0- : p0+ [: k- : k+]'. The law acts on s = w - g, the relative "
+      "normal displacement beyond closing the gap (s = 0 where the "
+      "surfaces touch, s < 0 apart). bilateral: s = 0, the surfaces slide "
+      "on each other but neither separate nor penetrate (an initial gap is "
+      "closed), and the reaction has either sign. stop: the two-sided stop "
+      "of Contact/Stops on s (free for g- < s < g+; at s = g+ a pushing "
+      "reaction down to p0- <= 0, at s = g- a pulling one up to p0+ >= 0; "
+      "beyond, the limit reaction or a branch of stiffness k- or k+), e.g. "
+      "'12: stop : -1e-4 : 0 : -1e12 : 5e4 : 0 : 1e9' for surfaces that "
+      "press freely, open by 0.1 mm, and are then held by a tether of "
+      "strength 5e4 and stiffness 1e9 per node. Values are expressions in "
+      "x, y (, z) evaluated at the slave node. Empty: every pair unilateral.");
     prm.leave_subsection();
   }
 
@@ -214,7 +232,50 @@ namespace hrcontact
           }
         pairs.push_back(pair);
       }
+    prm.enter_subsection("Contact");
+    const std::string laws = prm.get("Pair laws");
+    prm.leave_subsection();
+    parse_laws(laws, constants);
     return !pairs.empty();
+  }
+
+  template <int dim>
+  void
+  ContactPairs<dim>::parse_laws(const std::string &text,
+                                const Constants   &constants)
+  {
+    for (const BoundaryEntry &e :
+         parse_boundary_list(text, dim, false, "Contact/Pair laws"))
+      {
+        const std::string where =
+          "Contact/Pair laws, boundary " + std::to_string(e.boundary_id);
+        const auto pair =
+          std::find_if(pairs.begin(), pairs.end(), [&e](const Pair &p) {
+            return p.slave == e.boundary_id;
+          });
+        if (pair == pairs.end())
+          throw InputError(where + ": not the slave boundary of a contact pair "
+                                   "(Contact/Contact pairs).");
+        const auto parts = split_and_trim(e.expressions, ':');
+        if (parts[0] == "unilateral" && parts.size() == 1)
+          pair->law = Pair::Law::unilateral;
+        else if (parts[0] == "bilateral" && parts.size() == 1)
+          pair->law = Pair::Law::bilateral;
+        else if (parts[0] == "stop" && (parts.size() == 5 || parts.size() == 7))
+          {
+            pair->law            = Pair::Law::stop;
+            const char *names[6] = {"g-", "g+", "p0-", "p0+", "k-", "k+"};
+            for (unsigned int k = 1; k < parts.size(); ++k)
+              pair->stop_values[k - 1] = make_function<dim>(
+                parts[k], 1, constants, where + ", " + names[k - 1]);
+          }
+        else
+          throw InputError(where +
+                           ": expected 'unilateral', 'bilateral' or "
+                           "'stop : g- : g+ : p0- : p0+ [: k- : k+]', "
+                           "found '" +
+                           e.expressions + "'.");
+      }
   }
 
   template <int dim>
@@ -388,8 +449,8 @@ namespace hrcontact
 
   template <int dim>
   OwnRow
-  ContactPairs<dim>::own_row(const unsigned int node,
-                             const Point<dim> &,
+  ContactPairs<dim>::own_row(const unsigned int          node,
+                             const Point<dim>           &point,
                              const NodeConstraints<dim> &constraints,
                              const EquilibriumSystem    &system) const
   {
@@ -420,7 +481,27 @@ namespace hrcontact
     for (unsigned int d = 0; d < dim; ++d)
       row.direction.push_back(projection.normal[d]);
     row.value      = projection.gap;
-    row.unilateral = true;
+    row.unilateral = pair.law == Pair::Law::unilateral;
+    if (pair.law == Pair::Law::stop)
+      {
+        double values[6] = {0, 0, 0, 0, 0, 0};
+        for (unsigned int k = 0; k < 6; ++k)
+          if (pair.stop_values[k])
+            {
+              values[k] = pair.stop_values[k]->value(point);
+              if (!std::isfinite(values[k]))
+                throw InputError(where + ": a stop value is not finite.");
+            }
+        try
+          {
+            row.law = std::make_shared<TwoSidedStop>(
+              values[0], values[1], values[2], values[3], values[4], values[5]);
+          }
+        catch (const InputError &e)
+          {
+            throw InputError(where + ": " + e.what());
+          }
+      }
     return row;
   }
 

@@ -1,6 +1,7 @@
 #ifndef hrcontact_contact_pairs_h
 #define hrcontact_contact_pairs_h
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
@@ -8,6 +9,7 @@
 #include <hrcontact/constraints/constraint_source.h>
 
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace hrcontact
@@ -29,6 +31,11 @@ namespace hrcontact
    * the rows of the master nodes take the slave's normal equilibrium row
    * into their combinations so that all rows stay biorthogonal
    * (couple_rows, doc/contact-pairs.md).
+   *
+   * Contact/Pair laws gives a pair another law for s = w - g (s = 0 where
+   * the surfaces touch): bilateral (s = 0, the surfaces slide but do not
+   * separate) or a two-sided stop (section 2.4.2, the law of Contact/Stops
+   * on s).
    */
   template <int dim>
   class ContactPairs : public ConstraintSource<dim>
@@ -65,8 +72,17 @@ namespace hrcontact
     {
       dealii::types::boundary_id slave, master;
       /** How far from the master surface a slave node may be and still get
-       * a row (0: one master face length). */
+       * a row (0: a tenth of the master boundary's bounding box diagonal). */
       double reach = 0;
+      /** The law of s = w - g. */
+      enum class Law
+      {
+        unilateral,
+        bilateral,
+        stop
+      } law = Law::unilateral;
+      /** A stop's g-, g+, p0-, p0+ (, k-, k+) at the slave node. */
+      std::shared_ptr<dealii::FunctionParser<dim>> stop_values[6];
     };
 
     /** Where a slave node meets the master surface. */
@@ -80,6 +96,10 @@ namespace hrcontact
     };
 
   private:
+    /** Read Contact/Pair laws into the pairs. */
+    void
+    parse_laws(const std::string &text, const Constants &constants);
+
     std::vector<Pair> pairs;
     /** Found by prepare() for the system being classified, by slave node. */
     mutable std::map<unsigned int, Projection> projections;
