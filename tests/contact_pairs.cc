@@ -232,6 +232,30 @@ main()
                     "NO")
               << std::endl;
   }
+  // Three blocks (parameters/three-blocks.prm): the middle one pressed
+  // onto the bottom one by a shear on its side, the top one pulled off. One
+  // pair stays pressed while the top body floats: the run stops with the
+  // floating outcome for body 3 (before, every contact row had to be
+  // released, and the solve went on with a singular system).
+  {
+    const auto p = hrcontact_tests::solve_from_text<2>(
+      hrcontact_tests::read_file(std::string(SOURCE_DIR) +
+                                 "/../parameters/three-blocks.prm") +
+      "subsection Supports\n  set Prescribed displacements = 0 x: 0 | 10 x: "
+      "0 | 20 x: 0\nend\nsubsection Loads\n  set Tractions = 10: 0; -1e6 | "
+      "23: 0; 1e6\nend\n" +
+      quiet);
+    const auto  &r       = p->results();
+    unsigned int pressed = 0;
+    for (unsigned int k = 0; k < r.system.contact_rows.size(); ++k)
+      pressed += !r.contact->released[k];
+    std::cout << "  top body of three pulled away: outcome floating: "
+              << (r.contact->outcome == hrcontact::SolveOutcome::floating ?
+                    "yes" :
+                    "NO")
+              << " (" << r.contact->floating_body << "), " << pressed
+              << " pair rows still pressed" << std::endl;
+  }
   expect_error("same boundary ids",
                "subsection Bodies\n  subsection Body 2\n    set Boundary id "
                "offset = 2\n  end\nend\n");

@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <iomanip>
 #include <map>
+#include <numeric>
+#include <set>
 #include <sstream>
 
 namespace hrcontact
@@ -486,8 +488,38 @@ namespace hrcontact
     // The largest nodal load (distributed: the largest on any process).
     const double load_scale = system.load.linfty_norm();
     contact_solver.set_nodal_compliance(scene.nodal_compliance(*triangulation));
-    r.free_rigid_motions = rigid_motions_held_only_by_contact(system);
-    contact_solver.held_only_by_contact = (r.free_rigid_motions > 0);
+    // The bodies only contact holds along some rigid motion, each with the
+    // contact rows at its nodes (a pair row at both bodies').
+    {
+      const auto free      = rigid_motions_held_only_by_contact_by_body(system);
+      r.free_rigid_motions = std::accumulate(free.begin(), free.end(), 0u);
+      auto &held           = contact_solver.held_only_by_contact;
+      held.clear();
+      std::vector<int> index(free.size(), -1);
+      for (unsigned int b = 0; b < free.size(); ++b)
+        if (free[b] > 0)
+          {
+            index[b] = held.size();
+            held.push_back(
+              {free.size() > 1 ? "body " + std::to_string(b + 1) : "",
+               free[b],
+               {}});
+          }
+      auto body_of = [this](const unsigned int node) {
+        const auto it = system.node_body.find(node);
+        return it == system.node_body.end() ? 0u : it->second;
+      };
+      for (unsigned int i = 0; i < nq; ++i)
+        {
+          std::set<unsigned int> bodies;
+          for (const auto &[dof, c] :
+               system.rows[system.contact_rows[i]].combination)
+            bodies.insert(body_of(system.dof_node(dof)));
+          for (const unsigned int b : bodies)
+            if (b < index.size() && index[b] >= 0)
+              held[index[b]].rows.push_back(i);
+        }
+    }
     // Kinds whose rows follow the configuration (curved obstacles).
     std::vector<std::unique_ptr<RowRelinearisation>> relinearisations;
     for (const auto &source : scene.constraints)

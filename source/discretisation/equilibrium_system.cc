@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <numeric>
 #include <sstream>
 
 namespace hrcontact
@@ -191,6 +192,13 @@ namespace hrcontact
   unsigned int
   rigid_motions_held_only_by_contact(const EquilibriumSystem &system)
   {
+    const auto by_body = rigid_motions_held_only_by_contact_by_body(system);
+    return std::accumulate(by_body.begin(), by_body.end(), 0u);
+  }
+
+  std::vector<unsigned int>
+  rigid_motions_held_only_by_contact_by_body(const EquilibriumSystem &system)
+  {
     const unsigned int dim     = system.dim;
     const unsigned int n_modes = (dim == 2) ? 3 : 6;
     // Rotations about the centroid, scaled by the body's size, so that the
@@ -200,7 +208,7 @@ namespace hrcontact
 
     // Each body on its own (a scene of several bodies): the rows of its
     // nodes must hold its rigid motions.
-    unsigned int free_modes = 0;
+    std::vector<unsigned int> free_modes(system.n_bodies, 0);
     for (unsigned int body = 0; body < system.n_bodies; ++body)
       {
         dealii::LAPACKFullMatrix<double> gram(n_modes, n_modes);
@@ -253,7 +261,7 @@ namespace hrcontact
         unsigned int free = n_modes - eigenvalues.size();
         for (unsigned int k = 0; k < eigenvalues.size(); ++k)
           free += (eigenvalues[k] <= 1e-10 * std::max(largest, 1.));
-        free_modes += free;
+        free_modes[body] = free;
       }
     return free_modes;
   }

@@ -348,7 +348,7 @@ namespace hrcontact
 
   std::string
   AugmentedLagrangianSolver::outcome_message(
-    const unsigned int free_rigid_motions) const
+    unsigned int free_rigid_motions) const
   {
     const std::string mechanism_hint =
       free_rigid_motions == 0 ?
@@ -363,7 +363,14 @@ namespace hrcontact
         case SolveOutcome::converged:
           return "";
         case SolveOutcome::floating:
-          return "every contact constraint released at multiplier update " +
+          // In a scene of several bodies: the floating one's motions.
+          for (const auto &body : held_only_by_contact)
+            if (!floating_body.empty() && body.name == floating_body)
+              free_rigid_motions = body.free_motions;
+          return "every contact constraint" +
+                 (floating_body.empty() ? std::string() :
+                                          " of " + floating_body) +
+                 " released at multiplier update " +
                  std::to_string(floating_update) +
                  ", and nothing else holds the body: the supports leave " +
                  std::to_string(free_rigid_motions) +
@@ -483,12 +490,13 @@ namespace hrcontact
     mu_history.clear();
     alpha_history.clear();
     released_history.clear();
-    total_newton_steps     = 0;
-    converged              = false;
-    diverged               = false;
-    cycled                 = false;
-    periodic               = false;
-    floating               = false;
+    total_newton_steps = 0;
+    converged          = false;
+    diverged           = false;
+    cycled             = false;
+    periodic           = false;
+    floating           = false;
+    floating_body.clear();
     roundoff_limited       = false;
     roundoff_floor         = 0;
     cycle_linear_tolerance = 0;
@@ -701,21 +709,25 @@ namespace hrcontact
             // Floating: every row with a multiplier on its free branch and none
             // holding (a released row of the consistent AL may still carry
             // compression).
-            {
-              bool all_free = true, none_holds = true;
-              for (unsigned int i = 0; i < nq; ++i)
-                {
-                  if (law[i]->has_multiplier())
-                    all_free &= released[i];
-                  none_holds &= !law[i]->holds(p[i]);
-                }
-              if (held_only_by_contact && all_free && none_holds)
-                {
-                  floating        = true;
-                  floating_update = update;
-                  break;
-                }
-            }
+            for (unsigned int b = 0; b < held_only_by_contact.size(); ++b)
+              {
+                bool all_free = true, none_holds = true;
+                for (const unsigned int i : held_only_by_contact[b].rows)
+                  {
+                    if (law[i]->has_multiplier())
+                      all_free &= released[i];
+                    none_holds &= !law[i]->holds(p[i]);
+                  }
+                if (all_free && none_holds)
+                  {
+                    floating        = true;
+                    floating_update = update;
+                    floating_body   = held_only_by_contact[b].name;
+                    break;
+                  }
+              }
+            if (floating)
+              break;
             // A released spring far softer than the mesh (alpha much larger
             // than the nodal compliance) leaves the body all but unsupported:
             // the solves lose every digit and ||pbar|| explodes. Stop, do not
@@ -910,14 +922,20 @@ namespace hrcontact
                   path_alpha[i] = contact[i] ? 1. / beta[i] : infinity;
                   path_mu[i]    = contact[i] ? -gamma[i] / beta[i] : 0.;
                 }
-            if (held_only_by_contact && std::none_of(contact.begin(),
-                                                     contact.end(),
-                                                     [](bool c) { return c; }))
-              {
-                floating        = true;
-                floating_update = k;
-                break;
-              }
+            for (unsigned int b = 0; b < held_only_by_contact.size(); ++b)
+              if (std::none_of(held_only_by_contact[b].rows.begin(),
+                               held_only_by_contact[b].rows.end(),
+                               [&contact](const unsigned int i) {
+                                 return contact[i];
+                               }))
+                {
+                  floating        = true;
+                  floating_update = k;
+                  floating_body   = held_only_by_contact[b].name;
+                  break;
+                }
+            if (floating)
+              break;
             if (!solved_sets.insert(contact).second)
               {
                 cycled = true;

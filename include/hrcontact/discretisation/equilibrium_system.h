@@ -333,6 +333,11 @@ namespace hrcontact
   unsigned int
   rigid_motions_held_only_by_contact(const EquilibriumSystem &system);
 
+  /** The same for each body of a multi-body scene (by body index), each
+   * held only by the rows at its own nodes. */
+  std::vector<unsigned int>
+  rigid_motions_held_only_by_contact_by_body(const EquilibriumSystem &system);
+
 } // namespace hrcontact
 
 #endif

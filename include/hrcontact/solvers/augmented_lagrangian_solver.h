@@ -157,14 +157,26 @@ namespace hrcontact
     const ConstraintLaw &
     law_of(const EquilibriumRow &row) const;
 
+    /** A body that some rigid-body motion leaves held by contact only. */
+    struct BodyHeldByContact
+    {
+      /** For messages: "body 2", ...; empty in a one-body scene. */
+      std::string name;
+      /** How many of its rigid-body motions only contact holds. */
+      unsigned int free_motions = 0;
+      /** The contact rows (indices into contact_rows) at its nodes,
+       * a pair row at its slave and its master nodes. */
+      std::vector<unsigned int> rows;
+    };
+
     /**
-     * Set before solve: some rigid-body motion of the body is held by
-     * unilateral contacts only (rigid_motions_held_only_by_contact > 0).
-     * Then an update that finds every unilateral row released, without
-     * having converged, means the loads pull the body off its obstacles:
-     * the solve stops with SolveOutcome::floating.
+     * Set before solve: the bodies whose rigid-body motions are held by
+     * contact rows only (rigid_motions_held_only_by_contact_by_body > 0).
+     * An update that finds every row of one of them released (none
+     * holding), without having converged, means the loads pull that body
+     * off: the solve stops with SolveOutcome::floating.
      */
-    bool held_only_by_contact = false;
+    std::vector<BodyHeldByContact> held_only_by_contact;
 
   private:
     /** The iteration itself; solve() sets the outcome from its flags. */

@@ -82,6 +82,8 @@ namespace hrcontact
     }
     /** The multiplier update during which floating was detected. */
     unsigned int floating_update = 0;
+    /** The body found floating ("body 3"; empty in a one-body scene). */
+    std::string floating_body;
     /** Displacement AL: the noise floor of ||change|| it stopped at. */
     double       roundoff_floor     = 0;
     unsigned int total_newton_steps = 0;
