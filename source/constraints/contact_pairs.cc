@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <hrcontact/constraints/contact_pairs.h>
+#include <hrcontact/constraints/two_sided_stops.h>
 
 #include <algorithm>
 #include <cmath>
@@ -484,23 +485,10 @@ namespace hrcontact
     row.unilateral = pair.law == Pair::Law::unilateral;
     if (pair.law == Pair::Law::stop)
       {
-        double values[6] = {0, 0, 0, 0, 0, 0};
+        std::array<const FunctionParser<dim> *, 6> values;
         for (unsigned int k = 0; k < 6; ++k)
-          if (pair.stop_values[k])
-            {
-              values[k] = pair.stop_values[k]->value(point);
-              if (!std::isfinite(values[k]))
-                throw InputError(where + ": a stop value is not finite.");
-            }
-        try
-          {
-            row.law = std::make_shared<TwoSidedStop>(
-              values[0], values[1], values[2], values[3], values[4], values[5]);
-          }
-        catch (const InputError &e)
-          {
-            throw InputError(where + ": " + e.what());
-          }
+          values[k] = pair.stop_values[k].get();
+        row.law = two_sided_stop_at<dim>(values, point, where);
       }
     return row;
   }

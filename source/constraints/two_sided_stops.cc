@@ -9,6 +9,40 @@ namespace hrcontact
   using namespace dealii;
 
   template <int dim>
+  std::shared_ptr<const ConstraintLaw>
+  two_sided_stop_at(const std::array<const FunctionParser<dim> *, 6> &values,
+                    const Point<dim>                                 &point,
+                    const std::string                                &where)
+  {
+    double v[6] = {0, 0, 0, 0, 0, 0};
+    for (unsigned int k = 0; k < 6; ++k)
+      if (values[k])
+        {
+          v[k] = values[k]->value(point);
+          if (!std::isfinite(v[k]))
+            throw InputError(where + ": a stop value is not finite.");
+        }
+    try
+      {
+        return std::make_shared<TwoSidedStop>(
+          v[0], v[1], v[2], v[3], v[4], v[5]);
+      }
+    catch (const InputError &e)
+      {
+        throw InputError(where + ": " + e.what());
+      }
+  }
+
+  template std::shared_ptr<const ConstraintLaw>
+  two_sided_stop_at<2>(const std::array<const FunctionParser<2> *, 6> &,
+                       const Point<2> &,
+                       const std::string &);
+  template std::shared_ptr<const ConstraintLaw>
+  two_sided_stop_at<3>(const std::array<const FunctionParser<3> *, 6> &,
+                       const Point<3> &,
+                       const std::string &);
+
+  template <int dim>
   void
   TwoSidedStops<dim>::declare_parameters(ParameterHandler &prm)
   {
@@ -136,25 +170,11 @@ namespace hrcontact
                          ": the stop direction has a part along the "
                          "prescribed displacement component " +
                          std::string(1, "xyz"[d]) + ".");
-    double values[6] = {0, 0, 0, 0, 0, 0};
+    std::array<const FunctionParser<dim> *, 6> values;
     for (unsigned int k = 0; k < 6; ++k)
-      if (stop.values[k])
-        {
-          values[k] = stop.values[k]->value(point);
-          if (!std::isfinite(values[k]))
-            throw InputError(where + ": a value is not finite.");
-        }
-    std::shared_ptr<const ConstraintLaw> law;
-    try
-      {
-        law = std::make_shared<TwoSidedStop>(
-          values[0], values[1], values[2], values[3], values[4], values[5]);
-      }
-    catch (const InputError &e)
-      {
-        throw InputError(where + ": " + e.what());
-      }
-    OwnRow row;
+      values[k] = stop.values[k].get();
+    const auto law = two_sided_stop_at<dim>(values, point, where);
+    OwnRow     row;
     for (unsigned int d = 0; d < dim; ++d)
       row.direction.push_back(stop.direction[d]);
     row.law = law;

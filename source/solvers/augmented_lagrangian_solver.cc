@@ -346,6 +346,22 @@ namespace hrcontact
                                  SolveOutcome::iteration_limit;
   }
 
+  bool
+  AugmentedLagrangianSolver::found_floating_body(
+    const std::function<bool(unsigned int)> &is_free,
+    const unsigned int                       update)
+  {
+    for (const BodyHeldByContact &body : held_only_by_contact)
+      if (std::all_of(body.rows.begin(), body.rows.end(), is_free))
+        {
+          floating        = true;
+          floating_update = update;
+          floating_body   = body.name;
+          return true;
+        }
+    return false;
+  }
+
   std::string
   AugmentedLagrangianSolver::outcome_message(
     unsigned int free_rigid_motions) const
@@ -709,24 +725,12 @@ namespace hrcontact
             // Floating: every row with a multiplier on its free branch and none
             // holding (a released row of the consistent AL may still carry
             // compression).
-            for (unsigned int b = 0; b < held_only_by_contact.size(); ++b)
-              {
-                bool all_free = true, none_holds = true;
-                for (const unsigned int i : held_only_by_contact[b].rows)
-                  {
-                    if (law[i]->has_multiplier())
-                      all_free &= released[i];
-                    none_holds &= !law[i]->holds(p[i]);
-                  }
-                if (all_free && none_holds)
-                  {
-                    floating        = true;
-                    floating_update = update;
-                    floating_body   = held_only_by_contact[b].name;
-                    break;
-                  }
-              }
-            if (floating)
+            if (found_floating_body(
+                  [&](const unsigned int i) {
+                    return (!law[i]->has_multiplier() || released[i]) &&
+                           !law[i]->holds(p[i]);
+                  },
+                  update))
               break;
             // A released spring far softer than the mesh (alpha much larger
             // than the nodal compliance) leaves the body all but unsupported:
@@ -922,19 +926,8 @@ namespace hrcontact
                   path_alpha[i] = contact[i] ? 1. / beta[i] : infinity;
                   path_mu[i]    = contact[i] ? -gamma[i] / beta[i] : 0.;
                 }
-            for (unsigned int b = 0; b < held_only_by_contact.size(); ++b)
-              if (std::none_of(held_only_by_contact[b].rows.begin(),
-                               held_only_by_contact[b].rows.end(),
-                               [&contact](const unsigned int i) {
-                                 return contact[i];
-                               }))
-                {
-                  floating        = true;
-                  floating_update = k;
-                  floating_body   = held_only_by_contact[b].name;
-                  break;
-                }
-            if (floating)
+            if (found_floating_body(
+                  [&contact](const unsigned int i) { return !contact[i]; }, k))
               break;
             if (!solved_sets.insert(contact).second)
               {

@@ -5,11 +5,24 @@
 
 #include <hrcontact/constraints/constraint_source.h>
 
+#include <array>
 #include <map>
 #include <memory>
 
 namespace hrcontact
 {
+  /**
+   * The TwoSidedStop law with its values g-, g+, p0-, p0+, k-, k+ (a null
+   * function: 0) evaluated at a point; bad values stop with an error naming
+   * `where`. Used by Contact/Stops and by the stops of contact pairs.
+   */
+  template <int dim>
+  std::shared_ptr<const ConstraintLaw>
+  two_sided_stop_at(
+    const std::array<const dealii::FunctionParser<dim> *, 6> &values,
+    const dealii::Point<dim>                                 &point,
+    const std::string                                        &where);
+
   /**
    * Contact/Stops: two-sided stops with limit reactions (section 2.4.2,
    * Fig. 4) on the nodes of a boundary: one row along the direction d with

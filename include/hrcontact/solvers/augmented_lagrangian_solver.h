@@ -14,6 +14,7 @@
 #include <hrcontact/solvers/newton_step.h>
 #include <hrcontact/solvers/row_relinearisation.h>
 
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -189,6 +190,15 @@ namespace hrcontact
     /** The outcome from the flags iterate() left. */
     void
     set_outcome();
+
+    /**
+     * Whether some body of held_only_by_contact has every row free
+     * (`is_free`, by index into contact_rows); if so, set floating, the
+     * update and the body.
+     */
+    bool
+    found_floating_body(const std::function<bool(unsigned int)> &is_free,
+                        const unsigned int                       update);
 
     /** The start of the next solve (start_from), if any. */
     ContactStart start;
