@@ -282,6 +282,10 @@ main(int argc, char **argv)
   compare<2>("two-cylinders.prm",
              "subsection Geometry\n  set Global refinements = 3\nend\n"
              "subsection Linear solver\n  set Solver = cg-amg\nend\n");
+  compare<2>("two-cylinders.prm",
+             "subsection Geometry\n  set Global refinements = 3\nend\n"
+             "subsection Contact\n  set Pair method = mortar\nend\n"
+             "subsection Linear solver\n  set Solver = cg-amg\nend\n");
   compare<3>("stacked-boxes-3d.prm",
              "subsection Linear solver\n  set Solver = cg-amg\nend\n");
   compare<3>("block-3d-contact.prm",

@@ -1,3 +1,4 @@
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 
 #include <hrcontact/constraints/contact_pairs.h>
@@ -91,6 +92,102 @@ namespace hrcontact
       return xi;
     }
 
+    /**
+     * The mortar sums of one slave node (2D, dual basis psi_s, the
+     * integrals over the parts of its faces that master faces cover):
+     * D = int psi_s, M_m = int psi_s N_m, G = int psi_s g, and how much of
+     * its faces is covered.
+     */
+    struct MortarSums
+    {
+      double                         D = 0, G = 0, covered = 0, length = 0;
+      std::map<unsigned int, double> M;
+    };
+
+    /**
+     * Segment to segment with dual Lagrange multipliers (Wohlmuth): each
+     * slave face is cut where the master faces facing it (within reach)
+     * begin and end, projected along the slave face's normal; on each
+     * piece the products of the slave's dual shape functions psi_1 = 2 -
+     * 3 xi, psi_2 = 3 xi - 1 with the master's linear ones are integrated
+     * exactly (3 Gauss points; both are linear in xi on straight faces).
+     */
+    template <int dim>
+    std::map<unsigned int, MortarSums>
+    mortar_sums(const std::vector<BoundaryFace<dim>>         &faces,
+                const types::boundary_id                      slave,
+                const std::vector<const BoundaryFace<dim> *> &masters,
+                const double                                  reach)
+    {
+      std::map<unsigned int, MortarSums> sums;
+      if constexpr (dim == 2)
+        {
+          const QGauss<1> gauss(3);
+          for (const auto &face : faces)
+            {
+              if (face.boundary_id != slave)
+                continue;
+              const Point<2>    &x0 = face.points[0];
+              const Tensor<1, 2> t  = face.points[1] - x0;
+              const double       L2 = t * t;
+              for (unsigned int a = 0; a < 2; ++a)
+                sums[face.nodes[a]].length += std::sqrt(L2);
+              for (const BoundaryFace<dim> *m : masters)
+                {
+                  if (!(m->normal * face.normal < 0))
+                    continue;
+                  const Point<2>    &y0 = m->points[0];
+                  const Tensor<1, 2> s  = m->points[1] - y0;
+                  if (std::abs(s * t) < 1e-12 * std::sqrt(L2 * (s * s)))
+                    continue;
+                  const double xa = (y0 - x0) * t / L2,
+                               xb = (m->points[1] - x0) * t / L2;
+                  const double lo = std::max(0., std::min(xa, xb)),
+                               hi = std::min(1., std::max(xa, xb));
+                  if (hi - lo <= 1e-12)
+                    continue;
+                  // Within reach at the middle of the piece.
+                  {
+                    const Point<2> x   = x0 + 0.5 * (lo + hi) * t;
+                    const double   eta = ((x - y0) * t) / (s * t);
+                    if (x.distance(y0 + eta * s) > reach)
+                      continue;
+                  }
+                  for (unsigned int q = 0; q < gauss.size(); ++q)
+                    {
+                      const double xi = lo + (hi - lo) * gauss.point(q)[0];
+                      const double w =
+                        gauss.weight(q) * (hi - lo) * std::sqrt(L2);
+                      const Point<2> x      = x0 + xi * t;
+                      const double   eta    = ((x - y0) * t) / (s * t);
+                      const Point<2> y      = y0 + eta * s;
+                      const double   g      = (y - x) * face.normal;
+                      const double   psi[2] = {2 - 3 * xi, 3 * xi - 1};
+                      const double   N[2]   = {1 - eta, eta};
+                      for (unsigned int a = 0; a < 2; ++a)
+                        {
+                          MortarSums &S = sums[face.nodes[a]];
+                          S.D += w * psi[a];
+                          S.G += w * psi[a] * g;
+                          for (unsigned int b = 0; b < 2; ++b)
+                            S.M[m->nodes[b]] += w * psi[a] * N[b];
+                        }
+                    }
+                  for (unsigned int a = 0; a < 2; ++a)
+                    sums[face.nodes[a]].covered += (hi - lo) * std::sqrt(L2);
+                }
+            }
+        }
+      else
+        {
+          (void)faces;
+          (void)slave;
+          (void)masters;
+          (void)reach;
+        }
+      return sums;
+    }
+
     std::string
     pair_name(const unsigned int slave, const unsigned int master)
     {
@@ -123,6 +220,17 @@ namespace hrcontact
       "a slave boundary with no master face in reach, stop with an error. "
       "Matching meshes give node-to-node rows. "
       "Empty: none.");
+    prm.declare_entry(
+      "Pair method",
+      "node to segment",
+      Patterns::Selection("node to segment|mortar"),
+      "How a pair's rows are built. node to segment: each slave node "
+      "against the master face it projects onto (fails the contact patch "
+      "test on non-matching meshes by a few per cent). mortar (2D): segment "
+      "to segment with dual Lagrange multipliers, the row of a slave node "
+      "integrated over its faces (the master weights M_sm / D_s, the gap "
+      "the weighted mean); passes the patch test. Slave nodes whose faces "
+      "the master does not cover entirely keep a node-to-segment row.");
     prm.declare_entry(
       "Pair laws",
       "",
@@ -235,7 +343,11 @@ namespace hrcontact
       }
     prm.enter_subsection("Contact");
     const std::string laws = prm.get("Pair laws");
+    mortar                 = prm.get("Pair method") == "mortar";
     prm.leave_subsection();
+    if (mortar && dim != 2 && !pairs.empty())
+      throw InputError("Contact/Pair method: mortar pairs are built in 2D "
+                       "only; use node to segment in 3D.");
     parse_laws(laws, constants);
     return !pairs.empty();
   }
@@ -335,6 +447,9 @@ namespace hrcontact
                   }
             reach = 0.1 * low.distance(high);
           }
+        const auto mortar_rows =
+          mortar ? mortar_sums<dim>(faces, pair.slave, masters, reach) :
+                   std::map<unsigned int, MortarSums>();
         unsigned int found = 0;
         for (const auto &[node, slave] : slaves)
           {
@@ -342,6 +457,42 @@ namespace hrcontact
             if (all_masters.count(node))
               throw InputError(where + ": " + system.describe_node(node) +
                                " is on a slave and a master boundary.");
+            // Mortar: a node whose faces the master covers entirely; at the
+            // edge of the master surface node to segment below.
+            const auto m = mortar_rows.find(node);
+            if (m != mortar_rows.end() &&
+                m->second.covered >= (1 - 1e-8) * m->second.length &&
+                m->second.D > 0)
+              {
+                const MortarSums &S = m->second;
+                Projection        projection;
+                projection.pair   = k;
+                projection.normal = slave.second / slave.second.norm();
+                projection.gap    = S.G / S.D;
+                for (const auto &[master, M] : S.M)
+                  if (std::abs(M) > 1e-12 * S.D)
+                    {
+                      projection.master_nodes.push_back(master);
+                      projection.shape_values.push_back(M / S.D);
+                    }
+                if (projection.gap < -1e-8 * S.length)
+                  {
+                    std::ostringstream s;
+                    s << where << ": the bodies overlap at the start: "
+                      << system.describe_node(node) << " lies "
+                      << -projection.gap
+                      << " inside the master boundary (mortar mean). Place "
+                         "the bodies so that the slave surface does not "
+                         "enter the master body.";
+                    throw InputError(s.str());
+                  }
+                projection.gap = std::max(projection.gap, 0.);
+                if (!projections.emplace(node, projection).second)
+                  throw InputError(where + ": " + system.describe_node(node) +
+                                   " is a slave node of two pairs.");
+                ++found;
+                continue;
+              }
             double     best = std::numeric_limits<double>::max();
             Projection projection;
             for (const BoundaryFace<dim> *face : masters)

@@ -32,6 +32,11 @@ namespace hrcontact
    * into their combinations so that all rows stay biorthogonal
    * (couple_rows, doc/contact-pairs.md).
    *
+   * Contact/Pair method = mortar (2D) integrates the row over the slave
+   * node's faces with the dual basis instead of taking it at the node
+   * (segment to segment): the master weights are M_sm / D_s, and the
+   * contact patch test passes on non-matching meshes.
+   *
    * Contact/Pair laws gives a pair another law for s = w - g (s = 0 where
    * the surfaces touch): bilateral (s = 0, the surfaces slide but do not
    * separate) or a two-sided stop (section 2.4.2, the law of Contact/Stops
@@ -96,6 +101,9 @@ namespace hrcontact
     };
 
   private:
+    /** Contact/Pair method: mortar rows (2D) instead of node to segment. */
+    bool mortar = false;
+
     /** Read Contact/Pair laws into the pairs. */
     void
     parse_laws(const std::string &text, const Constants &constants);
