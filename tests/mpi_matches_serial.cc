@@ -288,6 +288,9 @@ main(int argc, char **argv)
              "subsection Linear solver\n  set Solver = cg-amg\nend\n");
   compare<3>("stacked-boxes-3d.prm",
              "subsection Linear solver\n  set Solver = cg-amg\nend\n");
+  compare<3>("stacked-boxes-3d.prm",
+             "subsection Contact\n  set Pair method = mortar\nend\n"
+             "subsection Linear solver\n  set Solver = cg-amg\nend\n");
   compare<3>("block-3d-contact.prm",
              "subsection Geometry\n  set Global refinements = 1\nend\n"
              "subsection Linear solver\n  set Solver = cg-amg\nend\n");

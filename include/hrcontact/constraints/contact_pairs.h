@@ -32,7 +32,7 @@ namespace hrcontact
    * into their combinations so that all rows stay biorthogonal
    * (couple_rows, doc/contact-pairs.md).
    *
-   * Contact/Pair method = mortar (2D) integrates the row over the slave
+   * Contact/Pair method = mortar integrates the row over the slave
    * node's faces with the dual basis instead of taking it at the node
    * (segment to segment): the master weights are M_sm / D_s, and the
    * contact patch test passes on non-matching meshes.
@@ -101,7 +101,7 @@ namespace hrcontact
     };
 
   private:
-    /** Contact/Pair method: mortar rows (2D) instead of node to segment. */
+    /** Contact/Pair method: mortar rows instead of node to segment. */
     bool mortar = false;
 
     /** Read Contact/Pair laws into the pairs. */
