@@ -325,6 +325,21 @@ namespace hrcontact
       return sums;
     }
 
+    /** The bodies overlap at the start: the error, naming the node. */
+    InputError
+    overlap_error(const std::string &where,
+                  const std::string &node,
+                  const double       depth,
+                  const std::string &measured)
+    {
+      std::ostringstream s;
+      s << where << ": the bodies overlap at the start: " << node << " lies "
+        << depth << " inside the master boundary" << measured
+        << ". Place the bodies so that the slave surface does not enter the "
+           "master body.";
+      return InputError(s.str());
+    }
+
     std::string
     pair_name(const unsigned int slave, const unsigned int master)
     {
@@ -586,6 +601,12 @@ namespace hrcontact
           mortar ? mortar_sums<dim>(faces, pair.slave, masters, reach) :
                    std::map<unsigned int, MortarSums>();
         unsigned int found = 0;
+        auto add = [&](const unsigned int node, const Projection &projection) {
+          if (!projections.emplace(node, projection).second)
+            throw InputError(where + ": " + system.describe_node(node) +
+                             " is a slave node of two pairs.");
+          ++found;
+        };
         for (const auto &[node, slave] : slaves)
           {
             const Point<dim> &x = slave.first;
@@ -610,22 +631,15 @@ namespace hrcontact
                       projection.master_nodes.push_back(master);
                       projection.shape_values.push_back(M / S.D);
                     }
-                if (projection.gap < -1e-8 * S.length)
-                  {
-                    std::ostringstream s;
-                    s << where << ": the bodies overlap at the start: "
-                      << system.describe_node(node) << " lies "
-                      << -projection.gap
-                      << " inside the master boundary (mortar mean). Place "
-                         "the bodies so that the slave surface does not "
-                         "enter the master body.";
-                    throw InputError(s.str());
-                  }
+                // The faces' total length (2D) or area (3D) as a size.
+                const double size = dim == 2 ? S.length : std::sqrt(S.length);
+                if (projection.gap < -1e-8 * size)
+                  throw overlap_error(where,
+                                      system.describe_node(node),
+                                      -projection.gap,
+                                      " (mortar mean)");
                 projection.gap = std::max(projection.gap, 0.);
-                if (!projections.emplace(node, projection).second)
-                  throw InputError(where + ": " + system.describe_node(node) +
-                                   " is a slave node of two pairs.");
-                ++found;
+                add(node, projection);
                 continue;
               }
             double     best = std::numeric_limits<double>::max();
@@ -674,24 +688,15 @@ namespace hrcontact
                       projection.shape_values.push_back(N[v]);
                     }
                 if (projection.gap < -1e-8 * length)
-                  {
-                    std::ostringstream s;
-                    s << where << ": the bodies overlap at the start: "
-                      << system.describe_node(node) << " lies "
-                      << -projection.gap
-                      << " inside the master boundary. Place the bodies so "
-                         "that the slave surface does not enter the master "
-                         "body.";
-                    throw InputError(s.str());
-                  }
+                  throw overlap_error(where,
+                                      system.describe_node(node),
+                                      -projection.gap,
+                                      "");
                 projection.gap = std::max(projection.gap, 0.);
               }
             if (best == std::numeric_limits<double>::max())
               continue;
-            if (!projections.emplace(node, projection).second)
-              throw InputError(where + ": " + system.describe_node(node) +
-                               " is a slave node of two pairs.");
-            ++found;
+            add(node, projection);
           }
         if (found == 0)
           throw InputError(
