@@ -99,6 +99,7 @@ namespace hrcontact
       // (choose_path): a mesh that small stays serial, as it needs every
       // cell on every process (the mesh is cheap to build again).
       if (distributed_mesh && reduction.path == "automatic" &&
+          !material_iteration_prefers_condensed() &&
           dense_reduction_bytes(spaces.dof_handler_displacement.n_dofs()) <=
             reduction.automatic_dense_limit)
         {
@@ -202,13 +203,25 @@ namespace hrcontact
         "reduction is built once from the initial constraint directions.");
     if (displacement_al || relinearise || distributed_mesh)
       path = "condensed";
+    std::string why;
+    if (path == "automatic" && dense_bytes <= reduction.automatic_dense_limit &&
+        material_iteration_prefers_condensed())
+      why = "for the material iteration; ";
     if (path == "automatic")
-      path = (dense_bytes <= reduction.automatic_dense_limit) ? "null-space" :
-                                                                "condensed";
-    log << "  Newton-step path: " << path << " (dense reduction would "
-        << "need about " << std::setprecision(3) << dense_bytes / 1e9 << " GB)"
-        << std::endl;
+      path = (dense_bytes <= reduction.automatic_dense_limit && why.empty()) ?
+               "null-space" :
+               "condensed";
+    log << "  Newton-step path: " << path << " (" << why
+        << "dense reduction would need about " << std::setprecision(3)
+        << dense_bytes / 1e9 << " GB)" << std::endl;
     return path;
+  }
+
+  template <int dim>
+  bool
+  HRProblem<dim>::material_iteration_prefers_condensed() const
+  {
+    return !scene.all_linear() || scene.stress_constraint != nullptr;
   }
 
   template <int dim>

@@ -114,7 +114,9 @@ namespace hrcontact
       "bytes); condensed eliminates the stresses cell by cell and solves the "
       "sparse system B F^-1 B^T with UMFPACK (grows about linearly); "
       "automatic takes null-space while its dense matrices fit in Automatic "
-      "dense limit.");
+      "dense limit, and condensed for a nonlinear material or a stress "
+      "constraint (whose material iteration solves dozens of Newton steps: "
+      "a masonry arch took 7 min 51 s on the dense path, 2.3 s condensed).");
     prm.declare_entry("Automatic dense limit",
                       "2e9",
                       Patterns::Double(0),

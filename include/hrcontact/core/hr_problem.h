@@ -85,6 +85,12 @@ namespace hrcontact
     /** "null-space" or "condensed", from the parameters and the size. */
     std::string
     choose_path(std::ostream &log) const;
+
+    /** Whether Path = automatic takes the condensed path whatever the size:
+     * a nonlinear material or a stress constraint (a material iteration of
+     * many Newton steps, each a dense solve on the null-space path). */
+    bool
+    material_iteration_prefers_condensed() const;
     /** Bytes of the dense null-space reduction with this many free rows. */
     double
     dense_reduction_bytes(const double n_free_rows) const;
