@@ -331,17 +331,20 @@ namespace hrcontact
 
     // Each body's map of the refined vertices, in its own frame.
     std::vector<std::function<Point<dim>(const Point<dim> &)>> maps;
+    std::vector<BodyPlacement<dim>>                            placements;
     for (unsigned int b = 0; b < n_bodies(); ++b)
-      maps.push_back(grid_of(b).refined_vertex_map());
+      {
+        maps.push_back(grid_of(b).refined_vertex_map());
+        placements.push_back(placement_of(b));
+      }
     std::vector<bool> moved(triangulation.n_vertices(), false);
     for (const auto &cell : triangulation.cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         if (!moved[cell->vertex_index(v)])
           {
-            const unsigned int       b         = cell->material_id();
-            const BodyPlacement<dim> placement = placement_of(b);
+            const unsigned int b = cell->material_id();
             cell->vertex(v) =
-              placement(maps[b](placement.inverse(cell->vertex(v))));
+              placements[b](maps[b](placements[b].inverse(cell->vertex(v))));
             moved[cell->vertex_index(v)] = true;
           }
     // As the joined refined bodies: flat, the manifolds placed the points.
