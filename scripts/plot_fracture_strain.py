@@ -90,4 +90,5 @@ plot '%s' using 1:2:3 with polygons fillcolor palette notitle, \\
     print(out)
 
 
-main()
+if __name__ == "__main__":
+    main()
