@@ -4,6 +4,7 @@
 
 #include <hrcontact/core/hr_problem.h>
 #include <hrcontact/core/run.h>
+#include <hrcontact/discretisation/displacement_law_stiffness.h>
 #include <hrcontact/discretisation/displacement_stiffness.h>
 #include <hrcontact/discretisation/hr_assembler.h>
 #include <hrcontact/material/linear_elasticity.h>
@@ -293,6 +294,8 @@ namespace hrcontact
     }
     mark_memory("stresses and displacements");
     r.linear_statistics = path->statistics;
+    if (output.compare_displacement_code)
+      compare_displacement_code(log);
     if (condensed)
       log << "  linear solver: " << r.linear_statistics.solver << ", "
           << r.linear_statistics.solves << " solves"
@@ -344,6 +347,76 @@ namespace hrcontact
     log << "  Q1 floor (plain displacement solve, CG + AMG): "
         << r.floor_seconds << " s, " << r.floor_iterations << " CG iterations"
         << std::endl;
+  }
+
+  template <int dim>
+  void
+  HRProblem<dim>::compare_displacement_code(std::ostream &log)
+  {
+    Results<dim> &r = results_;
+    if (scene.all_linear() || r.has_contact || scene.stress_constraint)
+      throw InputError(
+        "Output/Compare with a displacement code: only for a nonlinear "
+        "material (Material/Model = Ramberg-Osgood) without contact or a "
+        "stress constraint.");
+    // Newton on u from zero, each step's stiffness and load from the law
+    // inverted at the Gauss points; the run's supports, processes and
+    // linear solver. The first step is the elastic one.
+    Timer                         timer;
+    DisplacementLawStiffness<dim> law(scene, spaces);
+    const unsigned int            nq = system.contact_rows.size();
+    std::vector<double>           p, w(nq);
+    FieldVector                   u, next;
+    reinit_field(u, spaces.dof_handler_displacement);
+    reinit_field(next, spaces.dof_handler_displacement);
+    double change                   = 1;
+    r.displacement_code_steps       = 0;
+    r.displacement_code_local_steps = 0;
+    while (change > material_iteration.relative_tolerance)
+      {
+        if (r.displacement_code_steps >= material_iteration.maximum_steps)
+          throw NotConvergedError(
+            "Output/Compare with a displacement code: no convergence in " +
+            std::to_string(material_iteration.maximum_steps) +
+            " Newton steps (Material iteration/Maximum steps).");
+        r.displacement_code_local_steps =
+          std::max(r.displacement_code_local_steps, law.linearise_at(u));
+        CondensedStep path(system, linear_solver, &partition, &law);
+        path.solve(std::vector<bool>(nq, false),
+                   std::vector<double>(nq, 0.),
+                   std::vector<double>(nq, 1.),
+                   p);
+        path.displacements(w, next);
+        ++r.displacement_code_steps;
+        FieldVector difference;
+        difference.reinit(next, true);
+        difference.copy_locally_owned_data_from(next);
+        difference.add(-1., u);
+        const double scale = next.linfty_norm();
+        change             = scale > 0 ? difference.linfty_norm() / scale : 0.;
+        log << "  displacement code, Newton step " << r.displacement_code_steps
+            << ": displacement change " << std::scientific
+            << std::setprecision(2) << change << std::defaultfloat
+            << std::setprecision(6) << std::endl;
+        u.copy_locally_owned_data_from(next);
+        if (!is_complete(u))
+          u.update_ghost_values();
+      }
+    r.displacement_code_seconds = timer.wall_time();
+    FieldVector difference;
+    difference.reinit(u, true);
+    difference.copy_locally_owned_data_from(u);
+    difference.add(-1., r.displacement);
+    r.displacement_code_difference =
+      difference.linfty_norm() / std::max(r.displacement.linfty_norm(), 1e-300);
+    log << "  displacement code: " << r.displacement_code_steps
+        << " Newton steps, at most " << r.displacement_code_local_steps
+        << " local steps to invert the law at a Gauss point, "
+        << r.displacement_code_seconds << " s (the stress code's solve "
+        << r.contact_solve_seconds << " s); displacements differ by "
+        << std::scientific << std::setprecision(3)
+        << r.displacement_code_difference << std::defaultfloat
+        << std::setprecision(6) << " of the largest" << std::endl;
   }
 
   template <int dim>

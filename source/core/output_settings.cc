@@ -44,6 +44,19 @@ namespace hrcontact
       "contact_solve_to_floor and, with Time a linear elastic solve, "
       "elastic_solve_to_floor. Needs Material/Model = linear elasticity; "
       "costs one extra solve.");
+    prm.declare_entry(
+      "Compare with a displacement code",
+      "false",
+      Patterns::Bool(),
+      "Benchmarks for a nonlinear law (Material/Model = Ramberg-Osgood): "
+      "after the run, solve the same scene the way a displacement code must, "
+      "Newton's method on the Q1 displacements with the law inverted for the "
+      "stress at every Gauss point and step, on the same supports, processes "
+      "and linear solver, and report its Newton steps, the largest number "
+      "of local inversion steps at a point, its wall time against the run's "
+      "solve and the largest difference of its displacements from the run's "
+      "(summary.txt: displacement_code_*; doc/materials.md). No contact and "
+      "no stress constraint.");
     prm.leave_subsection();
   }
 
@@ -55,6 +68,8 @@ namespace hrcontact
     print_timing      = prm.get_bool("Print timing");
     time_linear_solve = prm.get_bool("Time a linear elastic solve");
     time_floor        = prm.get_bool("Time the Q1 floor");
+    compare_displacement_code =
+      prm.get_bool("Compare with a displacement code");
     prm.leave_subsection();
   }
 } // namespace hrcontact

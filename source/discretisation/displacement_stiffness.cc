@@ -46,6 +46,7 @@ namespace hrcontact
     FEValues<dim>      fv(fe, quadrature, update_gradients | update_JxW_values);
     const unsigned int n = fe.n_dofs_per_cell();
     FullMatrix<double> K(n, n);
+    const Vector<double>                 no_load;
     std::vector<types::global_dof_index> dofs(n);
     std::vector<SymmetricTensor<2, dim>> eps(n);
     std::vector<double>                  div(n);
@@ -79,7 +80,7 @@ namespace hrcontact
                   (lambda * div[i] * div[j] + 2 * mu * (eps[i] * eps[j])) *
                   fv.JxW(q);
           }
-        worker(cell->active_cell_index(), dofs, K);
+        worker(cell->active_cell_index(), dofs, K, no_load);
       }
   }
 

@@ -23,6 +23,20 @@ namespace hrcontact
       peak = Utilities::MPI::sum(peak, results.partition.communicator);
     output.summary.add("peak_memory_MB", peak);
     output.summary.add("wall_time", results.wall_time);
+    if (results.displacement_code_steps > 0)
+      {
+        output.summary.add("displacement_code_newton_steps",
+                           results.displacement_code_steps);
+        output.summary.add("displacement_code_local_steps",
+                           results.displacement_code_local_steps);
+        output.summary.add("displacement_code_seconds",
+                           results.displacement_code_seconds);
+        output.summary.add("displacement_code_to_solve",
+                           results.displacement_code_seconds /
+                             results.contact_solve_seconds);
+        output.summary.add("displacement_code_difference",
+                           results.displacement_code_difference);
+      }
     if (results.floor_displacement.size() > 0)
       {
         output.summary.add("q1_floor_seconds", results.floor_seconds);

@@ -551,7 +551,25 @@ namespace hrcontact
           {
             // Another bilinear form: no stresses to recover.
             recovery_complete = false;
-            stiffness->for_each_cell(owned_cell, add_owned);
+            stiffness->for_each_cell(
+              owned_cell,
+              [&](const unsigned int                          cell,
+                  const std::vector<types::global_dof_index> &du,
+                  const FullMatrix<double>                   &K_cell,
+                  const Vector<double>                       &load) {
+                add_owned(cell, du, K_cell);
+                // A Newton step's load, kept as a strain load is.
+                if (load.size() > 0)
+                  {
+                    strain_load_cell_size = du.size();
+                    strain_load_dofs.insert(strain_load_dofs.end(),
+                                            du.begin(),
+                                            du.end());
+                    strain_load_values.insert(strain_load_values.end(),
+                                              load.begin(),
+                                              load.end());
+                  }
+              });
             return;
           }
         system.for_each_cell_blocks(

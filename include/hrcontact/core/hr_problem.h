@@ -97,6 +97,10 @@ namespace hrcontact
     /** Output/Time the Q1 floor: the plain Q1 displacement solve. */
     void
     time_floor(std::ostream &log);
+    /** Output/Compare with a displacement code (DisplacementLawStiffness),
+     * after the run's own solve. */
+    void
+    compare_displacement_code(std::ostream &log);
     /**
      * Nested iteration (NestedIterationSettings): solve the scene with one
      * global refinement fewer (itself nested further as asked), record its

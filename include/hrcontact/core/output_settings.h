@@ -21,6 +21,9 @@ namespace hrcontact
     bool time_linear_solve = false;
     /** Benchmarks: time the plain Q1 displacement solve of the same mesh. */
     bool time_floor = false;
+    /** Benchmarks: solve a nonlinear law once more the displacement way
+     * (DisplacementLawStiffness; see declare_parameters). */
+    bool compare_displacement_code = false;
   };
 } // namespace hrcontact
 

@@ -124,6 +124,16 @@ namespace hrcontact
     unsigned int floor_iterations = 0;
     FieldVector  floor_displacement;
     /**
+     * Output/Compare with a displacement code: its Newton steps, the
+     * largest number of local steps a Gauss point's inversion of the law
+     * took, its wall time, and max |u_displacement code - u| / max |u|
+     * (steps 0 when not compared).
+     */
+    unsigned int displacement_code_steps       = 0;
+    unsigned int displacement_code_local_steps = 0;
+    double       displacement_code_seconds     = 0;
+    double       displacement_code_difference  = 0;
+    /**
      * The coarser levels the nested iteration solved first (coarsest
      * first; empty without nested iteration). Their time is part of
      * contact_solve_seconds.

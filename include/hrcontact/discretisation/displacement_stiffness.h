@@ -4,6 +4,7 @@
 #include <deal.II/base/types.h>
 
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <hrcontact/core/scene.h>
 #include <hrcontact/discretisation/mixed_spaces.h>
@@ -21,10 +22,15 @@ namespace hrcontact
   class CellStiffness
   {
   public:
+    /**
+     * (cell, its displacement dofs, K_c, a load of the cell added to the
+     * right-hand side: empty for none; a Newton step's K_c u_c - f_int,c).
+     */
     using Worker =
       std::function<void(const unsigned int cell,
                          const std::vector<dealii::types::global_dof_index> &,
-                         const dealii::FullMatrix<double> &)>;
+                         const dealii::FullMatrix<double> &,
+                         const dealii::Vector<double> &)>;
     virtual ~CellStiffness() = default;
     /** Calls the worker with the matrix of every cell the filter accepts. */
     virtual void
