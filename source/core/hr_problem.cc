@@ -369,10 +369,14 @@ namespace hrcontact
     FieldVector                   u, next;
     reinit_field(u, spaces.dof_handler_displacement);
     reinit_field(next, spaces.dof_handler_displacement);
-    double change                   = 1;
+    // The material iteration's stop: the tolerance, or the round-off floor
+    // of the solves (here of the total displacements, near 1e-10 of them).
+    std::vector<double> changes{1.};
     r.displacement_code_steps       = 0;
     r.displacement_code_local_steps = 0;
-    while (change > material_iteration.relative_tolerance)
+    while (changes.back() > material_iteration.relative_tolerance &&
+           !MaterialIteration::at_roundoff(changes,
+                                           material_iteration.roundoff_ceiling))
       {
         if (r.displacement_code_steps >= material_iteration.maximum_steps)
           throw NotConvergedError(
@@ -393,10 +397,10 @@ namespace hrcontact
         difference.copy_locally_owned_data_from(next);
         difference.add(-1., u);
         const double scale = next.linfty_norm();
-        change             = scale > 0 ? difference.linfty_norm() / scale : 0.;
+        changes.push_back(scale > 0 ? difference.linfty_norm() / scale : 0.);
         log << "  displacement code, Newton step " << r.displacement_code_steps
             << ": displacement change " << std::scientific
-            << std::setprecision(2) << change << std::defaultfloat
+            << std::setprecision(2) << changes.back() << std::defaultfloat
             << std::setprecision(6) << std::endl;
         u.copy_locally_owned_data_from(next);
         if (!is_complete(u))

@@ -31,6 +31,8 @@ namespace hrcontact
                            results.displacement_code_local_steps);
         output.summary.add("displacement_code_seconds",
                            results.displacement_code_seconds);
+        output.summary.add("stress_code_seconds",
+                           results.contact_solve_seconds);
         output.summary.add("displacement_code_to_solve",
                            results.displacement_code_seconds /
                              results.contact_solve_seconds);

@@ -44,6 +44,16 @@ namespace hrcontact
                        "positive (0 would never stop).");
   }
 
+  bool
+  MaterialIteration::at_roundoff(const std::vector<double> &changes,
+                                 const double               ceiling)
+  {
+    const unsigned int n = changes.size();
+    return n >= 3 && changes[n - 1] <= ceiling && changes[n - 2] <= ceiling &&
+           changes[n - 3] <= ceiling && changes[n - 1] > 0.5 * changes[n - 2] &&
+           changes[n - 2] > 0.5 * changes[n - 3];
+  }
+
   void
   MaterialIteration::solve(const Operations &operations, std::ostream &log)
   {
@@ -83,12 +93,7 @@ namespace hrcontact
             // tolerance. Three changes in a row that are tiny and no longer
             // fall are that floor, not a slow iteration: accept them, and say
             // so.
-            const unsigned int n = changes.size();
-            if (n >= 3 && change <= roundoff_ceiling &&
-                changes[n - 2] <= roundoff_ceiling &&
-                changes[n - 3] <= roundoff_ceiling &&
-                change > 0.5 * changes[n - 2] &&
-                changes[n - 2] > 0.5 * changes[n - 3])
+            if (at_roundoff(changes, roundoff_ceiling))
               {
                 roundoff_limited = true;
                 log << "  material iteration: the stress change stagnates at "

@@ -98,6 +98,14 @@ namespace hrcontact
       return roundoff_limited;
     }
 
+    /**
+     * Whether the last three changes are below `ceiling` and no longer
+     * fall (each above half the one before): the round-off floor of the
+     * linear solves, not a slow iteration.
+     */
+    static bool
+    at_roundoff(const std::vector<double> &changes, const double ceiling);
+
     double relative_tolerance = 1e-10;
     /** Changes below this that stop falling are round-off (see above). */
     double       roundoff_ceiling = 1e-8;
