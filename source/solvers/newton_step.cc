@@ -543,7 +543,17 @@ namespace hrcontact
     Vector<double>     shift, cell_load;
     std::size_t        stress_count = 0; // of the recovery cells so far
     bool               have_R = false, have_Kc = false;
-    auto               each_cell =
+    // A cell's load beside K_c (strain_load_*), cell after cell.
+    const auto keep_cell_load =
+      [&](const std::vector<types::global_dof_index> &du,
+          const Vector<double>                       &load) {
+        strain_load_cell_size = du.size(); // the same for all
+        strain_load_dofs.insert(strain_load_dofs.end(), du.begin(), du.end());
+        strain_load_values.insert(strain_load_values.end(),
+                                  load.begin(),
+                                  load.end());
+      };
+    auto each_cell =
       [&](const std::function<void(const unsigned int,
                                    const std::vector<types::global_dof_index> &,
                                    const FullMatrix<double> &)> &add_owned) {
@@ -560,15 +570,7 @@ namespace hrcontact
                 add_owned(cell, du, K_cell);
                 // A Newton step's load, kept as a strain load is.
                 if (load.size() > 0)
-                  {
-                    strain_load_cell_size = du.size();
-                    strain_load_dofs.insert(strain_load_dofs.end(),
-                                            du.begin(),
-                                            du.end());
-                    strain_load_values.insert(strain_load_values.end(),
-                                              load.begin(),
-                                              load.end());
-                  }
+                  keep_cell_load(du, load);
               });
             return;
           }
@@ -607,15 +609,9 @@ namespace hrcontact
                 add_owned(b.cell, du, Kc);
                 if (shift.size() > 0)
                   {
-                    strain_load_cell_size = du.size(); // the same for all
                     cell_load.reinit(du.size());
                     b.B.vmult(cell_load, shift);
-                    strain_load_dofs.insert(strain_load_dofs.end(),
-                                            du.begin(),
-                                            du.end());
-                    strain_load_values.insert(strain_load_values.end(),
-                                              cell_load.begin(),
-                                              cell_load.end());
+                    keep_cell_load(du, cell_load);
                   }
               }
             if (system.is_stored(b.cell))
