@@ -9,9 +9,8 @@ The computed sxx are the point values of solution.vtu on the section x = L/2
 (a line of cell edges: each cell's own value, both sides of the edge). The
 exact one inverts the uniaxial law eps = s/E + a (s/s0)^(n-1) s/E at eps =
 kappa y by Newton's method; the elastic line E kappa y shows what the power
-term takes away. The beam's constants are read from the .prm's Constants
-line and Ramberg-Osgood entries given as the second argument's directory's
-summary (or the defaults of the scene).
+term takes away. The beam's constants below are those of
+parameters/ramberg-osgood-beam.prm: change them with the scene.
 """
 import os
 import subprocess
