@@ -230,7 +230,20 @@ namespace hrcontact
   HRProblem<dim>::solve(std::ostream &log)
   {
     setup(log);
-    Results<dim> &r      = results_;
+    Results<dim> &r = results_;
+    if (output.compare_displacement_code)
+      {
+        // Refused before any solve: a linear law has nothing to compare,
+        // and the displacement code has no contact or stress constraint.
+        bool contact = false;
+        for (const unsigned int row : system.contact_rows)
+          contact |= system.rows[row].unilateral || bool(system.rows[row].law);
+        if (scene.all_linear() || contact || scene.stress_constraint)
+          throw InputError(
+            "Output/Compare with a displacement code: only for a nonlinear "
+            "material (Material/Model = Ramberg-Osgood) without contact or a "
+            "stress constraint.");
+      }
     r.solution_path      = choose_path(log);
     const bool condensed = (r.solution_path == "condensed");
     {
@@ -354,11 +367,9 @@ namespace hrcontact
   HRProblem<dim>::compare_displacement_code(std::ostream &log)
   {
     Results<dim> &r = results_;
-    if (scene.all_linear() || r.has_contact || scene.stress_constraint)
-      throw InputError(
-        "Output/Compare with a displacement code: only for a nonlinear "
-        "material (Material/Model = Ramberg-Osgood) without contact or a "
-        "stress constraint.");
+    // solve() refused other scenes before solving.
+    Assert(!scene.all_linear() && !r.has_contact && !scene.stress_constraint,
+           ExcInternalError());
     // Newton on u from zero, each step's stiffness and load from the law
     // inverted at the Gauss points; the run's supports, processes and
     // linear solver. The first step is the elastic one.
