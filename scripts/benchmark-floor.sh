@@ -18,8 +18,6 @@ exe="$root/build/hrcontact"
 . "$root/scripts/scene-prm.sh"
 runs=${RUNS:-"hertz:5:1 hertz:7:1"}
 repeat=${REPEAT:-1}
-median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
-get() { sed -n "s/^$1 = //p" "$2/summary.txt"; }
 printf "| scene | ref. | np | dofs | path | solver | updates | Newton | solves | CG it / solve | floor CG it | contact s | elastic s | floor s | contact / floor | elastic / floor | peak MB / process |\n"
 printf "|---|---:|---:|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n"
 for run in $runs; do

@@ -17,8 +17,6 @@ exe="$root/build/hrcontact"
 . "$root/scripts/scene-prm.sh"
 runs=${RUNS:-"ramberg-osgood-beam:4 cantilever-ro:4"}
 repeat=${REPEAT:-1}
-median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
-get() { sed -n "s/^$1 = //p" "$2/summary.txt"; }
 printf "| scene | ref. | dofs | stress code Newton | displacement code Newton | local steps (max) | stress code s | displacement code s | displacement / stress | max displacement difference |\n"
 printf "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n"
 for run in $runs; do

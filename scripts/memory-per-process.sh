@@ -16,7 +16,6 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 exe=${EXE:-"$root/build/hrcontact"}
 . "$root/scripts/scene-prm.sh"
 runs=${RUNS:-"hertz:8:1 hertz:8:2 hertz:8:4"}
-get() { sed -n "s/^$1 = //p" "$2/summary.txt"; }
 # The "peak so far" of a stage in the memory table the run prints.
 stage_peak() { grep "^  $1 " "$2" | sed -n 's/.*(peak so far \([0-9]*\)).*/\1/p' | tail -1; }
 printf "| scene | ref. | np | dofs | floor peak MB, largest process | peak MB, largest process | peak MB, all processes | contact s | floor s |\n"

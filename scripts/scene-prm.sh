@@ -2,7 +2,8 @@
 # root and oversubscription, one OpenMP thread for timing, a work directory
 # $work removed at exit, and write_scene_prm: the .prm of one run, a scene
 # of parameters/ at a refinement, its results into a directory, with the
-# given Output entries and $EXTRA_PRM appended.
+# given Output entries and $EXTRA_PRM appended; median (of the numbers on
+# stdin, one a line) and get KEY DIR (a value of DIR/summary.txt).
 #   write_scene_prm FILE SCENE REFINEMENTS OUTPUT_DIR ["set Key = value" ...]
 export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1}
 export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:-1}
@@ -22,3 +23,5 @@ write_scene_prm() {
     echo "${EXTRA_PRM:-}"
   } > "$file"
 }
+median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+get() { sed -n "s/^$1 = //p" "$2/summary.txt"; }

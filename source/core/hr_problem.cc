@@ -231,14 +231,15 @@ namespace hrcontact
   {
     setup(log);
     Results<dim> &r = results_;
+    r.has_contact   = false;
+    for (const unsigned int row : system.contact_rows)
+      r.has_contact |=
+        system.rows[row].unilateral || bool(system.rows[row].law);
+    // Refused before any solve: a linear law has nothing to compare, and
+    // the displacement code has no contact or stress constraint.
     if (output.compare_displacement_code)
       {
-        // Refused before any solve: a linear law has nothing to compare,
-        // and the displacement code has no contact or stress constraint.
-        bool contact = false;
-        for (const unsigned int row : system.contact_rows)
-          contact |= system.rows[row].unilateral || bool(system.rows[row].law);
-        if (scene.all_linear() || contact || scene.stress_constraint)
+        if (scene.all_linear() || r.has_contact || scene.stress_constraint)
           throw InputError(
             "Output/Compare with a displacement code: only for a nonlinear "
             "material (Material/Model = Ramberg-Osgood) without contact or a "
@@ -276,10 +277,6 @@ namespace hrcontact
         time_floor(log);
         mark_memory("Q1 floor (timed)");
       }
-    r.has_contact = false;
-    for (const unsigned int row : system.contact_rows)
-      r.has_contact |=
-        system.rows[row].unilateral || bool(system.rows[row].law);
     Timer contact_timer;
     start_from_coarser_level(r.solution_path, log);
     if (!r.coarse_levels.empty())

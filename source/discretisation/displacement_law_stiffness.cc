@@ -72,9 +72,9 @@ namespace hrcontact
                      update_gradients | update_quadrature_points);
     const FEValuesExtractors::Vector     displacements(0);
     std::vector<SymmetricTensor<2, dim>> eps(nq);
-    // A point stops when its stress change is at most this times the
-    // largest stress of the last linearisation (or of the strain's elastic
-    // stress on the first).
+    // A point stops when its stress change is at most 1e-13 times the
+    // largest stress of the last linearisation or its own (the first: only
+    // its own).
     double scale = 0;
     for (const auto &s : stress)
       scale = std::max(scale, s.norm());
