@@ -447,10 +447,16 @@ namespace hrcontact
     // at p = 0 makes its diagonal scheme cycle from a carried state (Hertz
     // at 24,962 dofs, doc/speed-accuracy.md); a number of levels still
     // applies to it.
+    // Nor for a nonlinear law or a stress constraint: a coarse level would
+    // run the whole material iteration to carry the contact state only,
+    // which each material step's contact solve starts from anyway (the
+    // no-tension pier at 128 x 768 cells: 760 s of coarse levels, the fine
+    // level's iteration the same; doc/materials.md).
     const bool applies =
       has_contact && path_name == "condensed" &&
       contact_solver.regularisation == Regularisation::consistent &&
-      !scene.has_changing_rows();
+      !scene.has_changing_rows() && scene.all_linear() &&
+      !scene.stress_constraint;
     const unsigned int levels = nested.levels(scene.global_refinements,
                                               system.n_displacement_dofs,
                                               dim,

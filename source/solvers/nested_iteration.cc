@@ -115,7 +115,9 @@ namespace hrcontact
       "only the number of Newton steps on it drops). 0: off. automatic: on "
       "the condensed path with the consistent augmented Lagrangian (the "
       "Macaulay one takes a number), from Minimum dofs up, as many levels as keep the coarsest "
-      "at Coarsest level dofs or more. A number needs as many Global "
+      "at Coarsest level dofs or more; not for a nonlinear law or a stress "
+      "constraint (a coarse level would run the whole material iteration "
+      "to carry the contact state only). A number needs as many Global "
       "refinements.");
     prm.declare_entry("Minimum dofs",
                       "20000",
