@@ -54,6 +54,7 @@ namespace hrcontact
     nested.parse_parameters(prm);
     material_iteration.parse_parameters(prm);
     constraint_iteration.parse_parameters(prm);
+    linear_solver.stiffening_compliance = bool(scene.stress_constraint);
     std::ostringstream text;
     prm.print_parameters(text, ParameterHandler::ShortPRM);
     parameter_text = text.str();

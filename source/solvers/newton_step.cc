@@ -43,7 +43,8 @@ namespace hrcontact
       "Trilinos ML smoothed-aggregation AMG with the rigid-body modes as near "
       "null space, distributed over the processes under mpirun; automatic: "
       "direct up to Direct solver limit unknowns (per dimension), cg-amg "
-      "above.");
+      "above; in 2D with Material/Admissible stresses direct at any size "
+      "(CG slows down as the constraint's penalty grows).");
     prm.declare_entry("Direct solver limit 2D",
                       "1e5",
                       Patterns::Double(0),
@@ -135,6 +136,8 @@ namespace hrcontact
   {
     if (solver != "automatic")
       return solver;
+    if (stiffening_compliance && dim == 2)
+      return "direct";
     return (n <= (dim == 3 ? direct_limit_3d : direct_limit_2d)) ? "direct" :
                                                                    "cg-amg";
   }

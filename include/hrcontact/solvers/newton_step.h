@@ -39,18 +39,27 @@ namespace hrcontact
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
-    /** "direct" or "cg-amg" for a system with n unknowns in dim dimensions. */
+    /**
+     * "direct" or "cg-amg" for a system with n unknowns in dim dimensions.
+     * With stiffening_compliance, automatic takes direct at any size in 2D:
+     * CG's iterations grow with a stress constraint's penalty (the no-tension
+     * pier at 198k dofs on 2 processes: as fast as MUMPS at alpha E = 100,
+     * 2.2 times slower at 1e3; doc/materials.md).
+     */
     std::string
     choose(const unsigned int n, const unsigned int dim) const;
     /** Whether the AMG hierarchy is kept across Newton steps in dim. */
     bool
     reuses_preconditioner(const unsigned int dim) const;
 
-    std::string  solver          = "automatic";
-    double       direct_limit_2d = 1e5;
-    double       direct_limit_3d = 1e4;
-    double       tolerance       = 1e-12;
-    unsigned int max_iterations  = 2000;
+    std::string solver          = "automatic";
+    double      direct_limit_2d = 1e5;
+    double      direct_limit_3d = 1e4;
+    /** Cell compliances that grow by orders of magnitude during the solve
+     * (a stress constraint's penalty); set by the problem, not a parameter. */
+    bool         stiffening_compliance = false;
+    double       tolerance             = 1e-12;
+    unsigned int max_iterations        = 2000;
     /** "automatic" (keep in 3D), "true" or "false". */
     std::string  reuse_preconditioner  = "automatic";
     bool         warm_start            = true;
