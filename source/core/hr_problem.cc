@@ -663,6 +663,7 @@ namespace hrcontact
             start.alpha           = last.alpha;
             start.p               = last.p;
             start.tolerance_scale = last.tolerance_scale;
+            start.origin          = "the last material step's state";
             contact_solver.start_from(start);
           }
         first = false;

@@ -553,6 +553,8 @@ namespace hrcontact
     force_scale     = std::max(scale, 1e-300);
 
     const bool pure_penalty = (regularisation == Regularisation::pure_penalty);
+    // Three digits on this line, whatever the stream held before.
+    const std::streamsize precision = log.precision(3);
     log << "  augmented Lagrangian ("
         << (regularisation == Regularisation::consistent ? "consistent" :
             regularisation == Regularisation::macaulay   ? "Macaulay" :
@@ -568,10 +570,11 @@ namespace hrcontact
       log << " (" << initial_penalty
           << (regularisation == Regularisation::displacement ? " / " : " x ")
           << "nodal compliance " << nodal_compliance << ")";
-    log << ", tolerance " << std::setprecision(3) << tolerance_used;
+    log << ", tolerance " << tolerance_used;
     if (started)
-      log << ", started from the coarser level's state";
+      log << ", started from " << start.origin;
     log << std::endl;
+    log.precision(precision);
 
     if (regularisation == Regularisation::displacement)
       {

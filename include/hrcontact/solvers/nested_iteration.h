@@ -28,6 +28,8 @@ namespace hrcontact
      * stops where it would have from its own trial solution; 0: none.
      */
     double tolerance_scale = 0;
+    /** Where the state comes from, for the log line of the solve it starts. */
+    std::string origin = "the coarser level's state";
     /** Whether it holds one entry per Q row of a system. */
     bool
     fits(const EquilibriumSystem &system) const
