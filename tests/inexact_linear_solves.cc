@@ -5,7 +5,10 @@
 // first at the default 1e-12. Each symptom now tightens CG and goes on: the
 // run must converge to the answer of the direct solver (the step limit is
 // lowered to 15 so that the third symptom costs little), and at the default
-// tolerance nothing is tightened.
+// tolerance nothing is tightened. The AMG aggregates follow the matrix
+// graph: with coordinate aggregation (the default on this stretched mesh)
+// CG at 1e-9 is accurate enough that nothing needs tightening, and the
+// mechanism would go untested at that tolerance.
 
 #include <deal.II/base/mpi.h>
 
@@ -42,7 +45,9 @@ main(int argc, char **argv)
   for (const std::string tolerance : {"1e-12", "1e-9", "1e-8", "1e-7"})
     {
       const auto cg =
-        run("  set Solver = cg-amg\n  set Tolerance = " + tolerance + "\n");
+        run("  set Solver = cg-amg\n  set AMG aggregation = matrix\n"
+            "  set Tolerance = " +
+            tolerance + "\n");
       const auto &r          = cg->results();
       const auto &p          = r.contact->p;
       double      difference = 0;

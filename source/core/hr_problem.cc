@@ -7,6 +7,7 @@
 #include <hrcontact/discretisation/displacement_law_stiffness.h>
 #include <hrcontact/discretisation/displacement_stiffness.h>
 #include <hrcontact/discretisation/hr_assembler.h>
+#include <hrcontact/geometry/cell_aspect_ratio.h>
 #include <hrcontact/material/linear_elasticity.h>
 
 #include <algorithm>
@@ -116,6 +117,10 @@ namespace hrcontact
       partition = partition_with_p4est(*triangulation,
                                        spaces.dof_handler_displacement,
                                        mpi_communicator);
+      // Stretched cells change how AMG should coarsen (AMG aggregation).
+      linear_solver.largest_aspect_ratio =
+        largest_cell_aspect_ratio(*triangulation);
+      results_.largest_aspect_ratio = linear_solver.largest_aspect_ratio;
     }
     mark_memory("mesh, dofs and partition");
     log << "  "
@@ -314,7 +319,11 @@ namespace hrcontact
                 ", " + std::to_string(r.linear_statistics.iterations) +
                   " CG iterations, " +
                   std::to_string(r.linear_statistics.preconditioner_setups) +
-                  " AMG set-ups" :
+                  " AMG set-ups, aggregates by " +
+                  r.linear_statistics.aggregation +
+                  " (largest cell aspect ratio " +
+                  std::to_string(int(std::round(r.largest_aspect_ratio))) +
+                  ")" :
                 std::string());
     if (condensed && r.linear_statistics.tightenings > 0)
       log << ", tolerance tightened " << r.linear_statistics.tightenings
@@ -904,6 +913,7 @@ namespace hrcontact
     summary.add("plane_condition", scene.plane_condition_name());
     summary.add("stress_element", spaces.stress_element_name);
     summary.add("cells", triangulation->n_global_active_cells());
+    summary.add("largest_aspect_ratio", r.largest_aspect_ratio);
     summary.add("displacement_dofs", system.n_displacement_dofs);
     summary.add("stress_dofs", system.n_stress_dofs);
     summary.add("free_rows", system.n_free_rows);
@@ -920,6 +930,7 @@ namespace hrcontact
         if (s.solver == "cg-amg")
           {
             summary.add("linear_tolerance", s.tolerance);
+            summary.add("amg_aggregation", s.aggregation);
             summary.add("linear_tolerance_tightenings", s.tightenings);
           }
         summary.add("linear_setup_seconds", s.setup_seconds);

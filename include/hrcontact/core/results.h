@@ -103,6 +103,10 @@ namespace hrcontact
       return !contact || contact->converged();
     }
 
+    /** The mesh's largest cell aspect ratio (largest_cell_aspect_ratio); it
+     * selects the AMG aggregation (Linear solver/AMG aggregation =
+     * automatic). */
+    double largest_aspect_ratio = 1;
     /** "null-space" or "condensed": the path the run took. */
     std::string solution_path;
     /** The dense reduction (null-space path only, else null). */

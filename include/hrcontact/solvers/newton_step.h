@@ -65,6 +65,25 @@ namespace hrcontact
     bool         warm_start            = true;
     double       aggregation_threshold = 1e-4;
     unsigned int smoother_sweeps       = 2;
+    /** "automatic", "matrix" or "coordinates" (AMG aggregation). */
+    std::string aggregation          = "automatic";
+    double      coordinate_threshold = 0.03;
+    double      aspect_ratio_limit   = 4;
+    /** The mesh's largest cell aspect ratio; set by the problem, not a
+     * parameter. */
+    double largest_aspect_ratio = 1;
+
+    /**
+     * Whether ML builds its aggregates from the node coordinates (a distance
+     * Laplacian) instead of the matrix graph. On stretched cells the matrix
+     * graph of elasticity does not show which couplings are strong, and
+     * aggregates that cross the thin direction coarsen what the smoother
+     * cannot reach: on the graded Hertz mesh the Q1 floor's CG iterations
+     * grow 168, 207, 251 at refinements 7, 8, 9 with the matrix graph and
+     * take 49, 60, 80 with the coordinates (doc/performance.md).
+     */
+    bool
+    aggregates_by_coordinates() const;
   };
 
   /** Counters of the linear solves of a path, for logs and benchmarks. */
@@ -79,6 +98,9 @@ namespace hrcontact
      * the factorisations of the serial direct back end.) */
     double setup_seconds = 0;
     double solve_seconds = 0;
+    /** How the AMG aggregates were built, "coordinates" or "matrix"
+     * (LinearSolverSettings::aggregates_by_coordinates); empty without AMG. */
+    std::string aggregation;
     /** CG's relative tolerance at the end (Linear solver/Tolerance unless an
      * inner Newton cycle tightened it: tighten_linear_solver), and how often
      * it was tightened. */
