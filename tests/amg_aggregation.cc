@@ -14,13 +14,8 @@ template <int dim>
 std::unique_ptr<hrcontact::HRProblem<dim>>
 run(const std::string &scene, const std::string &extra)
 {
-  return hrcontact_tests::solve_from_text<dim>(
-    hrcontact_tests::read_file(std::string(SOURCE_DIR) + "/../parameters/" +
-                               scene) +
-    extra +
-    "subsection Equilibrium reduction\n  set Path = condensed\nend\n"
-    "subsection Output\n  set Write solution = false\n"
-    "  set Output directory = results\n  set Time the Q1 floor = true\nend\n");
+  return hrcontact_tests::solve_from_text<dim>(hrcontact_tests::condensed_scene(
+    scene, extra + "subsection Output\n  set Time the Q1 floor = true\nend\n"));
 }
 
 template <int dim>

@@ -92,13 +92,7 @@ std::unique_ptr<hrcontact::HRProblem<dim>>
 run(const std::string &scene, const std::string &extra, const MPI_Comm comm)
 {
   return hrcontact_tests::solve_from_text<dim>(
-    hrcontact_tests::read_file(std::string(SOURCE_DIR) + "/../parameters/" +
-                               scene) +
-      extra +
-      "subsection Equilibrium reduction\n  set Path = condensed\nend\n"
-      "subsection Output\n  set Write solution = false\n"
-      "  set Output directory = results\nend\n",
-    comm);
+    hrcontact_tests::condensed_scene(scene, extra), comm);
 }
 
 template <int dim>

@@ -89,6 +89,20 @@ namespace hrcontact_tests
     return s.str();
   }
 
+  /**
+   * The text of parameters/SCENE with `extra` appended, on the condensed
+   * path, writing no solution (results/ for the summary).
+   */
+  inline std::string
+  condensed_scene(const std::string &scene, const std::string &extra)
+  {
+    return read_file(std::string(SOURCE_DIR) + "/../parameters/" + scene) +
+           extra +
+           "subsection Equilibrium reduction\n  set Path = condensed\nend\n"
+           "subsection Output\n  set Write solution = false\n"
+           "  set Output directory = results\nend\n";
+  }
+
   /** "yes" if value <= bound: prints a check that can fail. */
   inline std::string
   check(const double value, const double bound)
