@@ -123,10 +123,11 @@ namespace hrcontact
                       "4",
                       Patterns::Double(1),
                       "AMG aggregation = automatic takes the coordinates "
-                      "when the largest cell aspect ratio (largest over "
-                      "singular value over smallest of the cell map's "
-                      "Jacobian at the cell centre; a x b rectangles: a / b; "
-                      "Hertz 50-145, tunnel 2.6, boxes 1) exceeds this.");
+                      "when the mesh's largest cell aspect ratio exceeds "
+                      "this (per cell, the largest singular value of the "
+                      "cell map's Jacobian at the centre over the smallest; "
+                      "a x b rectangles: a / b; Hertz 50-145 at refinements "
+                      "5-8, tunnel 2.6, boxes 1).");
     prm.declare_entry("AMG smoother sweeps",
                       "2",
                       Patterns::Integer(1, 20),
