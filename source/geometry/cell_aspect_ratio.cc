@@ -31,14 +31,28 @@ namespace hrcontact
                 for (unsigned int i = 0; i < dim; ++i)
                   J[i][d] += sign * cell->vertex(v)[i];
               }
-          // The singular values are the square roots of J^T J's eigenvalues.
-          const auto   lambda = eigenvalues(symmetrize(transpose(J) * J));
-          const double lmax   = lambda[0];
-          const double lmin   = lambda[dim - 1];
-          largest =
-            std::max(largest,
-                     lmin > 0 ? std::sqrt(lmax / lmin) :
-                                std::numeric_limits<double>::infinity());
+          // The singular values are the square roots of J^T J's eigenvalues;
+          // an inverted or degenerate cell has no finite ratio.
+          const double det = determinant(J);
+          double       ratio;
+          if (!(det > 0))
+            ratio = std::numeric_limits<double>::infinity();
+          else if (dim == 2)
+            {
+              // s1^2 + s2^2 = |J|^2 and s1 s2 = det: ratio + 1/ratio = q,
+              // without the cancellation of an eigenvalue formula on
+              // square cells (which gave no value on a 0.0125 m cell).
+              const double q = J.norm_square() / det;
+              ratio          = 0.5 * (q + std::sqrt(std::max(q * q - 4, 0.)));
+            }
+          else
+            {
+              const auto lambda = eigenvalues(symmetrize(transpose(J) * J));
+              // The smallest from the product of all three, det^2.
+              ratio =
+                std::sqrt(lambda[0] * lambda[0] * lambda[1] / (det * det));
+            }
+          largest = std::max(largest, ratio);
         }
     return Utilities::MPI::max(largest, triangulation.get_communicator());
   }
