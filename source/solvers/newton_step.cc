@@ -291,6 +291,14 @@ namespace hrcontact
     unsigned int                         dofs_per_cell = 0;
     std::vector<types::global_dof_index> cell_dofs;
     std::vector<double>                  cell_stiffness;
+    /**
+     * The held rows and springs `matrix` was assembled for (the key of
+     * CondensedStep::solve, as for the direct factor). A multiplier update
+     * that keeps every branch and penalty changes only the right-hand side:
+     * the next step keeps the matrix and its AMG hierarchy.
+     */
+    std::vector<double> matrix_key;
+    bool                assembled = false;
   };
 
   // ------------------------------------------------------------------------
@@ -550,6 +558,8 @@ namespace hrcontact
   CondensedStep::rows_changed()
   {
     direct_factor.reset();
+    if (distributed)
+      distributed->assembled = false;
   }
 
   void
@@ -561,7 +571,8 @@ namespace hrcontact
     if (distributed)
       {
         distributed->preconditioner.clear();
-        distributed->built = false;
+        distributed->built     = false;
+        distributed->assembled = false;
       }
     assemble();
   }
@@ -1067,16 +1078,53 @@ namespace hrcontact
     Vector<double>                       spring_force;
     std::vector<types::global_dof_index> node_dofs;
 
+    // What K and the springs depend on, beyond the fixed part: per Q row
+    // held (-1) or the spring's compliance, and its direction (rows that
+    // follow the configuration move it, and a matrix of the old directions
+    // would be off by as much). The held values and the spring anchors
+    // (g + offset) enter the right-hand side only.
+    std::vector<double> key;
+    key.reserve(system.contact_rows.size() * (1 + system.dim));
+    for (unsigned int i = 0; i < system.contact_rows.size(); ++i)
+      {
+        const EquilibriumRow &row = system.rows[system.contact_rows[i]];
+        key.push_back(pieces[i].spring ? pieces[i].compliance : -1.);
+        for (unsigned int k = 0; k < row.combination.size(); ++k)
+          key.push_back(row.direction_component(k));
+      }
+
     ++statistics.solves;
     if (distributed)
       {
-        Timer       timer;
-        auto       &A   = distributed->matrix;
-        auto       &rhs = distributed->rhs;
-        const auto &d   = *distributed;
-        rhs             = 0;
-        // The rows the last step changed go back to the fixed part of K.
-        d.set_row_values(d.fixed_values);
+        Timer timer;
+        auto &A   = distributed->matrix;
+        auto &rhs = distributed->rhs;
+        auto &d   = *distributed;
+        rhs       = 0;
+        // The same held rows and springs as the matrix has (a multiplier
+        // update with no branch or penalty changed): the right-hand side
+        // only, the constraints' inhomogeneities eliminated with the kept
+        // cells' and springs' matrices as the assembly with the matrix does;
+        // and the AMG hierarchy stays valid.
+        const bool same_matrix = d.assembled && d.matrix_key == key;
+        if (!same_matrix)
+          {
+            // The rows the last step changed go back to the fixed part of K.
+            d.set_row_values(d.fixed_values);
+            // A new matrix needs a new hierarchy, unless the settings keep
+            // one across steps (solve_cg_amg).
+            if (!settings.reuses_preconditioner(system.dim))
+              d.built = false;
+          }
+        auto distribute =
+          [&](const FullMatrix<double>                   &M,
+              const Vector<double>                       &f,
+              const std::vector<types::global_dof_index> &dofs) {
+            if (same_matrix)
+              constraints.distribute_local_to_global(f, dofs, rhs, M);
+            else
+              constraints.distribute_local_to_global(M, f, dofs, A, rhs);
+          };
         // Loads enter per dof below; the cells at Q and H rows bring
         // stiffness only.
         const unsigned int n_per_cell = d.dofs_per_cell;
@@ -1096,8 +1144,7 @@ namespace hrcontact
               for (unsigned int j = 0; j < n_per_cell; ++j)
                 Kc(i, j) = values[i * n_per_cell + j];
             no_cell_force = 0;
-            constraints.distribute_local_to_global(
-              Kc, no_cell_force, du, A, rhs);
+            distribute(Kc, no_cell_force, du);
           }
         for (const auto &[row, piece] : springs)
           {
@@ -1105,8 +1152,7 @@ namespace hrcontact
             node_dofs.clear();
             for (const auto &[dof, c] : row->combination)
               node_dofs.push_back(dof);
-            constraints.distribute_local_to_global(
-              spring_matrix, spring_force, node_dofs, A, rhs);
+            distribute(spring_matrix, spring_force, node_dofs);
           }
         add_strain_loads([&](const std::vector<types::global_dof_index> &dofs,
                              const Vector<double> &values) {
@@ -1121,7 +1167,12 @@ namespace hrcontact
               one_dof[0]  = i;
               constraints.distribute_local_to_global(one_load, one_dof, rhs);
             }
-        A.compress(VectorOperation::add);
+        if (!same_matrix)
+          {
+            A.compress(VectorOperation::add);
+            d.matrix_key = key;
+            d.assembled  = true;
+          }
         rhs.compress(VectorOperation::add);
         statistics.setup_seconds += timer.wall_time();
 
@@ -1153,18 +1204,6 @@ namespace hrcontact
       {
         // K and the springs, factorised again only when a held row or a
         // spring's compliance changed (DirectFactor).
-        // The key: per Q row held (-1) or the spring's compliance, and its
-        // direction (rows that follow the configuration move it, and a
-        // factor of the old directions would be off by as much).
-        std::vector<double> key;
-        key.reserve(system.contact_rows.size() * (1 + system.dim));
-        for (unsigned int i = 0; i < system.contact_rows.size(); ++i)
-          {
-            const EquilibriumRow &row = system.rows[system.contact_rows[i]];
-            key.push_back(pieces[i].spring ? pieces[i].compliance : -1.);
-            for (unsigned int k = 0; k < row.combination.size(); ++k)
-              key.push_back(row.direction_component(k));
-          }
         Timer      timer;
         const bool refactorise = !direct_factor || direct_factor->key != key;
         if (refactorise)
@@ -1391,7 +1430,7 @@ namespace hrcontact
       statistics.setup_seconds += setup_timer.wall_time();
     };
     bool fresh = false;
-    if (!d.built || !reuse)
+    if (!d.built)
       {
         setup();
         fresh = true;
