@@ -63,6 +63,7 @@ namespace hrcontact
     /** "automatic" (keep in 3D), "true" or "false". */
     std::string  reuse_preconditioner  = "automatic";
     bool         warm_start            = true;
+    double       warm_start_reduction  = 1e-6;
     double       aggregation_threshold = 1e-4;
     unsigned int smoother_sweeps       = 2;
     /** "automatic", "matrix" or "coordinates" (AMG aggregation). */
