@@ -313,6 +313,15 @@ namespace hrcontact
      */
     std::vector<double> matrix_key;
     bool                assembled = false;
+    /**
+     * The MUMPS factor of `matrix` (Solver = direct with more than one
+     * process), kept while the matrix is: a step that changes only the
+     * right-hand side costs a forward and back substitution, as with the
+     * serial path's UMFPACK factor. Amesos keeps a pointer to `matrix` and
+     * the solver one to its control.
+     */
+    std::unique_ptr<SolverControl>                  direct_control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
   };
 
   // ------------------------------------------------------------------------
@@ -585,6 +594,7 @@ namespace hrcontact
     if (distributed)
       {
         distributed->preconditioner.clear();
+        distributed->direct_solver.reset();
         distributed->built     = false;
         distributed->assembled = false;
       }
@@ -1125,6 +1135,7 @@ namespace hrcontact
           {
             // The rows the last step changed go back to the fixed part of K.
             d.set_row_values(d.fixed_values);
+            d.direct_solver.reset();
             // A new matrix needs a new hierarchy, unless the settings keep
             // one across steps (solve_cg_amg).
             if (!settings.reuses_preconditioner(system.dim))
@@ -1345,16 +1356,25 @@ namespace hrcontact
   void
   CondensedStep::solve_direct_distributed()
   {
-    Timer                                          timer;
-    SolverControl                                  control(1, 0);
-    TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Mumps");
-    TrilinosWrappers::SolverDirect                 direct(control, data);
+    Timer timer;
+    auto &d = *distributed;
     try
       {
-        direct.solve(distributed->matrix, distributed->u, distributed->rhs);
+        if (!d.direct_solver)
+          {
+            d.direct_control = std::make_unique<SolverControl>(1, 0);
+            d.direct_solver  = std::make_unique<TrilinosWrappers::SolverDirect>(
+              *d.direct_control,
+              TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                             "Amesos_Mumps"));
+            d.direct_solver->initialize(d.matrix);
+            ++statistics.preconditioner_setups;
+          }
+        d.direct_solver->solve(d.u, d.rhs);
       }
     catch (const std::exception &)
       {
+        d.direct_solver.reset();
         throw InputError(singular_stiffness_message);
       }
     // MUMPS returns some vector for a singular matrix (a floating body, a
