@@ -503,6 +503,8 @@ namespace hrcontact
     coarse.reduction.path           = path_name;
     coarse.output.time_floor        = false;
     coarse.output.time_linear_solve = false;
+    coarse.contact_solver.relative_tolerance =
+      nested.coarse_tolerance(contact_solver.relative_tolerance);
     std::ostringstream coarse_log;
     bool               solved = false;
     std::string        failure;

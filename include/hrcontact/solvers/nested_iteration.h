@@ -6,6 +6,7 @@
 #include <hrcontact/discretisation/equilibrium_system.h>
 #include <hrcontact/solvers/contact_iteration.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -90,10 +91,25 @@ namespace hrcontact
            const unsigned int dim,
            const bool         applies) const;
 
+    /**
+     * The relative tolerance of the augmented Lagrangian on a coarser
+     * level, given the scene's own: the looser of the two. A coarser level
+     * only carries its state up, and the finest level's first multiplier
+     * update replaces most of it (the springs' multipliers by the fine
+     * mesh's own gaps), so digits it converges beyond the gap between the
+     * levels buy nothing.
+     */
+    double
+    coarse_tolerance(const double relative_tolerance) const
+    {
+      return std::max(relative_tolerance, coarse_level_tolerance);
+    }
+
     /** -1: automatic. */
-    int    coarse_levels       = -1;
-    double minimum_dofs        = 2e4;
-    double coarsest_level_dofs = 1e3;
+    int    coarse_levels          = -1;
+    double minimum_dofs           = 2e4;
+    double coarsest_level_dofs    = 1e3;
+    double coarse_level_tolerance = 1e-5;
   };
 } // namespace hrcontact
 
