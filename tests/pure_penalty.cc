@@ -30,8 +30,12 @@ main()
   const auto   al      = run("consistent augmented Lagrangian", 1e4);
   const double p_scale = al->results().summary.get_double("max_abs_p_n");
   std::cout << "consistent augmented Lagrangian: "
-            << (*al->results().contact).history.size() << " updates, tension "
-            << al->results().summary.get("max_positive_p_n") << std::endl;
+            << (*al->results().contact).history.size()
+            << " updates, tension / max |p| < 1e-10 (its tolerance): "
+            << hrcontact_tests::check(
+                 al->results().summary.get_double("max_positive_p_n") / p_scale,
+                 1e-10)
+            << std::endl;
   double previous_tension = 0;
   for (const double factor : {1e4, 1e6, 1e8})
     {

@@ -116,6 +116,14 @@ namespace hrcontact
     return held(0., 0);
   }
 
+  ContactPiece
+  BilateralConstraint::piece_of_branch(const unsigned int,
+                                       const double,
+                                       const double) const
+  {
+    return held(0., 0);
+  }
+
   double
   BilateralConstraint::gradient(const double, const double, const double) const
   {
@@ -158,6 +166,14 @@ namespace hrcontact
   {
     // Released iff p > mu/alpha (eq. 26): a spring anchored at g + mu.
     return (p > mu / alpha) ? spring(mu, alpha, 1) : held(0., 0);
+  }
+
+  ContactPiece
+  UnilateralContact::piece_of_branch(const unsigned int branch,
+                                     const double       mu,
+                                     const double       alpha) const
+  {
+    return (branch == 1) ? spring(mu, alpha, 1) : held(0., 0);
   }
 
   double

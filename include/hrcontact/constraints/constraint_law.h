@@ -78,6 +78,17 @@ namespace hrcontact
     piece(const double p, const double mu, const double alpha) const = 0;
 
     /**
+     * The piece of a branch for the multiplier mu and compliance alpha. The
+     * first Newton step after a multiplier update solves the branches p had
+     * with the multipliers it was solved with, re-anchored at the new ones
+     * (AugmentedLagrangianSolver).
+     */
+    virtual ContactPiece
+    piece_of_branch(const unsigned int branch,
+                    const double       mu,
+                    const double       alpha) const = 0;
+
+    /**
      * The piece of the trial solution (Step 0): the row held at its
      * reference, w = g.
      */
@@ -163,6 +174,10 @@ namespace hrcontact
              const double alpha) const override;
     ContactPiece
     piece(const double p, const double mu, const double alpha) const override;
+    ContactPiece
+    piece_of_branch(const unsigned int branch,
+                    const double       mu,
+                    const double       alpha) const override;
     double
     gradient(const double p,
              const double mu,
@@ -200,6 +215,10 @@ namespace hrcontact
              const double alpha) const override;
     ContactPiece
     piece(const double p, const double mu, const double alpha) const override;
+    ContactPiece
+    piece_of_branch(const unsigned int branch,
+                    const double       mu,
+                    const double       alpha) const override;
     double
     multiplier_after_step(const ContactPiece &solved,
                           const double        p,
@@ -300,6 +319,10 @@ namespace hrcontact
              const double alpha) const override;
     ContactPiece
     piece(const double p, const double mu, const double alpha) const override;
+    ContactPiece
+    piece_of_branch(const unsigned int branch,
+                    const double       mu,
+                    const double       alpha) const override;
     double
     regularised_potential(const double p,
                           const double mu,
@@ -329,11 +352,6 @@ namespace hrcontact
     const double g_minus, g_plus, p0_minus, p0_plus, k_minus, k_plus;
 
   private:
-    /** The piece of a branch for the multiplier mu and compliance alpha. */
-    ContactPiece
-    piece_of_branch(const unsigned int branch,
-                    const double       mu,
-                    const double       alpha) const;
     /** The maximiser q* of the envelope and its piece. */
     ContactPiece
     proximal(const double p,
