@@ -793,19 +793,26 @@ namespace hrcontact
             std::vector<ContactPiece> active(nq);
             std::vector<unsigned int> branches(nq);
             std::vector<double>       e(nq);
-            // The first step after a classical update keeps the branches p
-            // had with the multipliers it was solved with, re-anchored at the
-            // new ones. Read off the new multipliers, the old p counts a
-            // spring's tension twice (p > mu/alpha - p), and the edge rows of
-            // a contact zone switch to held and back, two solves per update
-            // (3D block at 807k dofs: 3 Newton steps where 1 suffices).
-            const bool keep_branches = newton_steps == 0 && updated &&
-                                       !diagonal && !pure_penalty &&
-                                       !geometry_changed;
+            // The first step after a classical update reads a row that the
+            // last step solved as a spring with the multipliers that solve
+            // used, and re-anchors it at the new ones. Read off the new
+            // multipliers, the old p counts the spring's tension twice (p >
+            // mu/alpha - p): the rows at the edge of a contact zone switched
+            // to held and back, two solves per update (3D block at 807k dofs:
+            // 3 Newton steps where 1 suffices). Not where the update grew the
+            // compliance: every spring is then softer, and on Hertz's
+            // coarsest level the kept springs alone held the body at alpha =
+            // 2.5e7 c_h, which MUMPS finds singular. Held rows are read with
+            // the new multipliers (the update resets their mu to 0: nothing
+            // is counted twice).
+            const bool after_update = newton_steps == 0 && updated &&
+                                      !diagonal && !pure_penalty &&
+                                      !geometry_changed;
             for (unsigned int i = 0; i < nq; ++i)
               {
                 active[i] =
-                  keep_branches ?
+                  (after_update && solved[i].spring &&
+                   alpha[i] == alpha_solved[i]) ?
                     law[i]->piece_of_branch(law[i]
                                               ->next_piece(solved[i],
                                                            p[i],

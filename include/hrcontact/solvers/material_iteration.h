@@ -107,13 +107,8 @@ namespace hrcontact
     at_roundoff(const std::vector<double> &changes, const double ceiling);
 
     double relative_tolerance = 1e-10;
-    /**
-     * Changes below this that stop falling are round-off (see above). The
-     * dense null-space path's floor grows with the released springs'
-     * compliance against the mesh's: on lift-off 5e-10 at alpha = 1e5 c_h,
-     * 5e-9 to 2.4e-8 at 1e6 c_h (the spread is the BLAS's threads).
-     */
-    double       roundoff_ceiling = 1e-7;
+    /** Changes below this that stop falling are round-off (see above). */
+    double       roundoff_ceiling = 1e-8;
     unsigned int maximum_steps    = 100;
 
   private:
