@@ -802,7 +802,7 @@ namespace hrcontact
             // 3 Newton steps where 1 suffices). Not where the update grew the
             // compliance: every spring is then softer, and on Hertz's
             // coarsest level the kept springs alone held the body at alpha =
-            // 2.5e7 c_h, which MUMPS finds singular. Held rows are read with
+            // 2.3e7 c_h, which MUMPS finds singular. Held rows are read with
             // the new multipliers (the update resets their mu to 0: nothing
             // is counted twice).
             const bool after_update = newton_steps == 0 && updated &&

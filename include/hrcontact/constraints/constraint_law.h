@@ -79,9 +79,9 @@ namespace hrcontact
 
     /**
      * The piece of a branch for the multiplier mu and compliance alpha. The
-     * first Newton step after a multiplier update solves the branches p had
-     * with the multipliers it was solved with, re-anchored at the new ones
-     * (AugmentedLagrangianSolver).
+     * first Newton step after a multiplier update reads a spring's branch
+     * with the multipliers of the last solve and re-anchors it at the new
+     * ones with this (AugmentedLagrangianSolver).
      */
     virtual ContactPiece
     piece_of_branch(const unsigned int branch,
