@@ -1542,6 +1542,8 @@ namespace hrcontact
                 "Linear solver/Solver = direct.";
         throw NotConvergedError(what.str());
       }
+    if (statistics.solves == 1)
+      statistics.first_solve_iterations = statistics.iterations;
     if (fresh)
       d.iterations_after_setup = steps;
     else if (steps > 2 * d.iterations_after_setup + 5)
@@ -1603,6 +1605,21 @@ namespace hrcontact
         const ArrayView<double>       sums(stress.begin(), stress.size());
         Utilities::MPI::sum(values, partition.communicator, sums);
       }
+  }
+
+  void
+  NewtonStepPath::set_start(const FieldVector &)
+  {}
+
+  void
+  CondensedStep::set_start(const FieldVector &u_start)
+  {
+    AssertDimension(u_start.size(), system.n_displacement_dofs);
+    if (!distributed || solver != "cg-amg" || !settings.warm_start)
+      return;
+    for (const auto i : partition.owned)
+      distributed->u[i] = u_start(i);
+    distributed->u.compress(VectorOperation::insert);
   }
 
   void

@@ -172,7 +172,13 @@ namespace hrcontact
     std::unique_ptr<StressConstraintField<dim>> constraint_field;
     EquilibriumSystem                           system;
     /** The p4est partition of the displacement dofs and cells. */
-    DofPartition        partition;
+    DofPartition partition;
+    /**
+     * The coarser level's displacements on this mesh (nested iteration with
+     * CG): the first solve starts from them instead of zero. Emptied once
+     * handed to the path.
+     */
+    FieldVector         coarse_start;
     Results<dim>        results_;
     dealii::TimerOutput timer;
     /** (stage, resident MB of the largest process, peak MB so far). */

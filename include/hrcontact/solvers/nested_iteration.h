@@ -110,6 +110,9 @@ namespace hrcontact
     double minimum_dofs           = 2e4;
     double coarsest_level_dofs    = 1e3;
     double coarse_level_tolerance = 1e-5;
+    /** CG's first solve on the finer level starts from the coarser level's
+     * displacements. */
+    bool carry_displacements = true;
   };
 } // namespace hrcontact
 

@@ -91,9 +91,11 @@ namespace hrcontact
   struct LinearSolverStatistics
   {
     std::string  solver;
-    unsigned int solves                = 0;
-    unsigned int iterations            = 0;
-    unsigned int preconditioner_setups = 0;
+    unsigned int solves     = 0;
+    unsigned int iterations = 0;
+    /** CG iterations of the first solve (a nested level's carried start). */
+    unsigned int first_solve_iterations = 0;
+    unsigned int preconditioner_setups  = 0;
     /** UMFPACK factorisations; AMG set-ups and, for the Trilinos back end,
      * the assembly of the distributed matrix. (preconditioner_setups counts
      * the factorisations of the serial direct back end.) */
@@ -142,6 +144,15 @@ namespace hrcontact
      */
     virtual void
     stresses(FieldVector &s) const = 0;
+
+    /**
+     * Displacements to start the next solve's iterations from (nested
+     * iteration: the coarser level's, prolongated), indexed as the
+     * displacement dofs; distributed or complete as reinit_field makes it.
+     * Exact solvers have no use for it and ignore it.
+     */
+    virtual void
+    set_start(const FieldVector &u_start);
 
     /**
      * Nodal displacements of the last solve, given the normal displacements
@@ -275,6 +286,10 @@ namespace hrcontact
           std::vector<double>             &p) override;
     void
     stresses(FieldVector &s) const override;
+    /** CG starts from it (its constrained entries zeroed, as any warm
+     * start's); MUMPS and UMFPACK ignore it. */
+    void
+    set_start(const FieldVector &u_start) override;
     void
     displacements(const std::vector<double> &contact_w,
                   FieldVector               &u) const override;
