@@ -570,6 +570,7 @@ namespace hrcontact
                                                      system,
                                                      std::pow(2., 1. - dim),
                                                      compliance_scale));
+    linear_solver.starts_from_coarser_level = true;
     // CG's first guess: the coarser answer, about an h^2 error away in
     // displacement (Hertz refinement 9: the first fine solve takes 77 CG
     // iterations instead of 100 from zero).

@@ -88,9 +88,13 @@ namespace hrcontact
       "which changes only the right-hand side, keeps it in any case). "
       "automatic: keep it in 3D, where one set-up costs about "
       "two floors' worth of CG iterations (3D block at 807k dofs on 2 "
-      "processes: contact solve 202 s rebuilding, 160 s keeping), rebuild "
-      "it in 2D, where set-ups are cheap and keeping gains nothing (Hertz "
-      "refinements 8 and 9, doc/performance.md).");
+      "processes: contact solve 202 s rebuilding, 160 s keeping), and in 2D "
+      "on a level that starts from a coarser level's state (Nested "
+      "iteration), whose Newton steps switch a few rows (Hertz refinement 9 "
+      "on 2 processes: one row, 4 more CG iterations instead of a 4-5 s "
+      "set-up; 2.8 floors instead of 3.0); rebuild it in 2D otherwise, where "
+      "steps switch many rows and a kept hierarchy preconditions poorly (the "
+      "tunnel: 300 CG iterations instead of 18; doc/performance.md).");
     prm.declare_entry(
       "AMG aggregation threshold",
       "1e-4",
@@ -185,7 +189,8 @@ namespace hrcontact
   LinearSolverSettings::reuses_preconditioner(const unsigned int dim) const
   {
     return reuse_preconditioner == "true" ||
-           (reuse_preconditioner == "automatic" && dim == 3);
+           (reuse_preconditioner == "automatic" &&
+            (dim == 3 || starts_from_coarser_level));
   }
 
   std::string

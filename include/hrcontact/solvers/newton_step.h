@@ -60,12 +60,17 @@ namespace hrcontact
     bool         stiffening_compliance = false;
     double       tolerance             = 1e-12;
     unsigned int max_iterations        = 2000;
-    /** "automatic" (keep in 3D), "true" or "false". */
-    std::string  reuse_preconditioner  = "automatic";
-    bool         warm_start            = true;
-    double       warm_start_reduction  = 1e-6;
-    double       aggregation_threshold = 1e-4;
-    unsigned int smoother_sweeps       = 2;
+    /** "automatic" (keep in 3D, and in 2D on a level that starts from a
+     * coarser one's state), "true" or "false". */
+    std::string reuse_preconditioner = "automatic";
+    /** The contact iteration starts from a coarser level's state (nested
+     * iteration), so its Newton steps switch few rows; set by the problem,
+     * not a parameter. */
+    bool         starts_from_coarser_level = false;
+    bool         warm_start                = true;
+    double       warm_start_reduction      = 1e-6;
+    double       aggregation_threshold     = 1e-4;
+    unsigned int smoother_sweeps           = 2;
     /** "automatic", "matrix" or "coordinates" (AMG aggregation). */
     std::string aggregation          = "automatic";
     double      coordinate_threshold = 0.03;
