@@ -24,10 +24,10 @@ namespace hrcontact
                   fine_dofs.get_triangulation().n_cells(0),
                 ExcMessage("prolongation between meshes of different coarse "
                            "grids"));
-    fine                                   = 0;
     const unsigned int                   n = fe.n_dofs_per_cell();
     Vector<double>                       parent_values(n), values(n);
     std::vector<types::global_dof_index> dofs(n);
+
     using Cell = typename DoFHandler<dim>::cell_iterator;
     auto write = [&](const Cell &cell, const Vector<double> &v) {
       cell->get_dof_indices(dofs);
@@ -65,6 +65,7 @@ namespace hrcontact
       for (unsigned int k = 0; k < c->n_children(); ++k)
         visit(c->child(k), f->child(k));
     };
+    fine = 0;
     for (auto c = coarse_dofs.begin(0), f = fine_dofs.begin(0);
          c != coarse_dofs.end(0);
          ++c, ++f)
