@@ -92,7 +92,8 @@ namespace hrcontact
       "on a level that starts from a coarser level's state (Nested "
       "iteration), whose Newton steps switch a few rows (Hertz refinement 9 "
       "on 2 processes: one row, 4 more CG iterations instead of a 4-5 s "
-      "set-up; 2.8 floors instead of 3.0); rebuild it in 2D otherwise, where "
+      "set-up; 2.3-2.8 floors in medians of 3 instead of 3.0); rebuild it in "
+      "2D otherwise, where "
       "steps switch many rows and a kept hierarchy preconditions poorly (the "
       "tunnel: 300 CG iterations instead of 18; doc/performance.md).");
     prm.declare_entry(
