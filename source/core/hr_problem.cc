@@ -331,6 +331,9 @@ namespace hrcontact
                   std::to_string(int(std::round(r.largest_aspect_ratio))) +
                   ")" :
                 std::string());
+    if (condensed && output.print_timing)
+      log << " (set-ups " << r.linear_statistics.setup_seconds << " s, solves "
+          << r.linear_statistics.solve_seconds << " s)";
     if (condensed && r.linear_statistics.tightenings > 0)
       log << ", tolerance tightened " << r.linear_statistics.tightenings
           << " time(s) to " << r.linear_statistics.tolerance;
@@ -371,8 +374,11 @@ namespace hrcontact
     reinit_field(r.floor_displacement, spaces.dof_handler_displacement);
     path.displacements(w, r.floor_displacement);
     log << "  Q1 floor (plain displacement solve, CG + AMG): "
-        << r.floor_seconds << " s, " << r.floor_iterations << " CG iterations"
-        << std::endl;
+        << r.floor_seconds << " s, " << r.floor_iterations << " CG iterations";
+    if (output.print_timing)
+      log << " (assembly and AMG set-up " << path.statistics.setup_seconds
+          << " s, CG " << path.statistics.solve_seconds << " s)";
+    log << std::endl;
   }
 
   template <int dim>

@@ -103,7 +103,8 @@ namespace hrcontact
     unsigned int preconditioner_setups  = 0;
     /** UMFPACK factorisations; AMG set-ups and, for the Trilinos back end,
      * the assembly of the distributed matrix. (preconditioner_setups counts
-     * the factorisations of the serial direct back end.) */
+     * the factorisations of the serial direct back end.) solve_seconds: the
+     * rest, CG or the substitutions; the two do not overlap. */
     double setup_seconds = 0;
     double solve_seconds = 0;
     /** How the AMG aggregates were built, "coordinates" or "matrix"
