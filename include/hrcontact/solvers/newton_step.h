@@ -69,7 +69,7 @@ namespace hrcontact
     bool         starts_from_coarser_level = false;
     bool         warm_start                = true;
     double       warm_start_reduction      = 1e-6;
-    double       aggregation_threshold     = 1e-4;
+    double       aggregation_threshold     = 0;
     unsigned int smoother_sweeps           = 2;
     /** "automatic", "matrix" or "coordinates" (AMG aggregation). */
     std::string aggregation          = "automatic";
