@@ -101,10 +101,12 @@ namespace hrcontact
     /** CG iterations of the first solve (a nested level's carried start). */
     unsigned int first_solve_iterations = 0;
     unsigned int preconditioner_setups  = 0;
-    /** UMFPACK factorisations; AMG set-ups and, for the Trilinos back end,
-     * the assembly of the distributed matrix. (preconditioner_setups counts
-     * the factorisations of the serial direct back end.) solve_seconds: the
-     * rest, CG or the substitutions; the two do not overlap. */
+    /** setup_seconds: UMFPACK and MUMPS factorisations, AMG set-ups and, for
+     * the Trilinos back end, the assembly of the distributed matrix
+     * (preconditioner_setups counts the factorisations of the direct back
+     * ends). solve_seconds: the rest, CG or the substitutions. The two do
+     * not overlap (before 2026-11-27 solve_seconds also held the AMG and
+     * MUMPS set-ups). */
     double setup_seconds = 0;
     double solve_seconds = 0;
     /** How the AMG aggregates were built, "coordinates" or "matrix"
