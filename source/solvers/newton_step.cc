@@ -47,13 +47,17 @@ namespace hrcontact
       "above; in 2D with Material/Admissible stresses direct at any size "
       "(CG slows down as the constraint's penalty grows).");
     prm.declare_entry("Direct solver limit 2D",
-                      "1e5",
+                      "5e4",
                       Patterns::Double(0),
                       "Unknowns up to which Solver = automatic takes the "
-                      "direct solver in 2D. Measured (doc/performance.md): "
-                      "CG + AMG is 1.5 times faster on the tunnel at 2e5 "
-                      "unknowns, but 2.4 times slower on the graded Hertz "
-                      "mesh at 1e5.");
+                      "direct solver in 2D (also on each coarser level of "
+                      "a nested iteration). Measured (doc/performance.md, "
+                      "2026-11-27): the tunnel's contact solve at 5.1e4 "
+                      "unknowns 1.05 s with CG + AMG against 1.5 s with "
+                      "UMFPACK; Hertz at 9.9e4 as fast either way serially, "
+                      "but as a coarser level on 2 processes 1.3-1.6 s "
+                      "against 3.8-4.3 s with MUMPS; below 2e4 the direct "
+                      "solver wins (Hertz at 6.3e3: 0.53 s against 0.93 s).");
     prm.declare_entry("Direct solver limit 3D",
                       "1e4",
                       Patterns::Double(0),

@@ -53,7 +53,7 @@ namespace hrcontact
     reuses_preconditioner(const unsigned int dim) const;
 
     std::string solver          = "automatic";
-    double      direct_limit_2d = 1e5;
+    double      direct_limit_2d = 5e4;
     double      direct_limit_3d = 1e4;
     /** Cell compliances that grow by orders of magnitude during the solve
      * (a stress constraint's penalty); set by the problem, not a parameter. */
