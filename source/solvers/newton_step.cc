@@ -13,6 +13,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <hrcontact/core/input.h>
+#include <hrcontact/discretisation/cell_condensation.h>
 #include <hrcontact/discretisation/displacement_stiffness.h>
 #include <hrcontact/solvers/newton_step.h>
 
@@ -536,17 +537,6 @@ namespace hrcontact
       "(Equilibrium reduction/Path = null-space) names the nodes the mode "
       "moves.";
 
-    /** R = F_c^{-1} B_c^T, which gives the cell's stresses s_c = R u_c. */
-    void
-    stress_recovery(const CellBlocks   &b,
-                    FullMatrix<double> &Finv,
-                    FullMatrix<double> &R)
-    {
-      Finv.reinit(b.stress_dofs.size(), b.stress_dofs.size());
-      Finv.invert(b.F);
-      R.reinit(b.stress_dofs.size(), b.displacement_dofs.size());
-      Finv.mTmult(R, b.B);
-    }
   } // namespace
 
   struct CondensedStep::DirectFactor
@@ -639,10 +629,11 @@ namespace hrcontact
     // every step needs, from the stored blocks or recomputed (a lean
     // system): K_c = B_c F_c^{-1} B_c^T of the owned cells to `add_owned`,
     // and F_c^{-1} B_c^T of the stored cells kept.
-    FullMatrix<double> Finv, R, Kc;
+    CellCondensation   condensation;
+    FullMatrix<double> R, Kc;
     Vector<double>     shift, cell_load;
     std::size_t        stress_count = 0; // of the recovery cells so far
-    bool               have_R = false, have_Kc = false;
+    bool               have_factor = false, have_R = false, have_Kc = false;
     // A cell's load beside K_c (strain_load_*), cell after cell.
     const auto keep_cell_load =
       [&](const std::vector<types::global_dof_index> &du,
@@ -681,29 +672,26 @@ namespace hrcontact
           [&](const CellBlocks &b) {
             const auto &du = b.displacement_dofs;
             // The same B_c and F_c as the previous cell: the same R and K_c.
-            if (!(b.same_as_previous && have_R))
+            if (!(b.same_as_previous && have_factor))
               {
-                stress_recovery(b, Finv, R);
-                have_R  = true;
-                have_Kc = false;
+                condensation.factorise(b.F, b.B);
+                have_factor = true;
+                have_R      = false;
+                have_Kc     = false;
               }
             // A material Newton step's strain term: the stresses shift by
             // -F_c^{-1} d_c and the load by B_c F_c^{-1} d_c.
             // Stored cells bring the d_c of the last refresh, recomputed
             // ones that of the same stress state.
             if (b.strain_term.size() > 0)
-              {
-                shift.reinit(b.strain_term.size());
-                Finv.vmult(shift, b.strain_term);
-              }
+              condensation.solve(b.strain_term, shift);
             else
               shift.reinit(0);
             if (owned_cell(b.cell))
               {
                 if (!have_Kc)
                   {
-                    Kc.reinit(du.size(), du.size());
-                    b.B.mmult(Kc, R);
+                    condensation.stiffness(Kc);
                     have_Kc = true;
                   }
                 add_owned(b.cell, du, Kc);
@@ -717,6 +705,11 @@ namespace hrcontact
             if (system.is_stored(b.cell))
               {
                 recovery_cells.push_back(b.cell);
+                if (!have_R)
+                  {
+                    condensation.recovery(R);
+                    have_R = true;
+                  }
                 recovery.push_back(R);
                 if (shift.size() > 0)
                   {
@@ -1596,8 +1589,9 @@ namespace hrcontact
         }
     if (!recovery_complete)
       {
-        FullMatrix<double> Finv, R;
-        bool               have_R = false;
+        CellCondensation condensation;
+        bool             have_factor = false;
+        Vector<double>   y, s_c;
         system.for_each_cell_blocks(
           [&](const unsigned int c) {
             return partition.owned_cell[c] && !system.is_stored(c);
@@ -1605,20 +1599,22 @@ namespace hrcontact
           [&](const CellBlocks &b) {
             const auto &du = b.displacement_dofs;
             const auto &ds = b.stress_dofs;
-            if (!(b.same_as_previous && have_R))
-              stress_recovery(b, Finv, R);
-            have_R = true;
-            // A material Newton step: s_c = F_c^{-1} (B_c^T u - d_c).
-            Vector<double> shift(b.strain_term.size());
-            if (shift.size() > 0)
-              Finv.vmult(shift, b.strain_term);
+            if (!(b.same_as_previous && have_factor))
+              condensation.factorise(b.F, b.B);
+            have_factor = true;
+            // s_c = F_c^{-1} (B_c^T u - d_c), d_c a material Newton step's
+            // strain term.
+            y.reinit(ds.size());
             for (unsigned int i = 0; i < ds.size(); ++i)
               {
                 double sum = 0;
                 for (unsigned int j = 0; j < du.size(); ++j)
-                  sum += R(i, j) * u[du[j]];
-                stress(ds[i]) = sum - (shift.size() > 0 ? shift[i] : 0.);
+                  sum += b.B(j, i) * u[du[j]];
+                y[i] = sum - (b.strain_term.size() > 0 ? b.strain_term[i] : 0.);
               }
+            condensation.solve(y, s_c);
+            for (unsigned int i = 0; i < ds.size(); ++i)
+              stress(ds[i]) = s_c[i];
           });
       }
     if (!is_complete(stress))
