@@ -3,9 +3,8 @@
 // First the prolongation itself: a linear field interpolated on a mesh is
 // carried exactly to the mesh one global refinement finer (2D and 3D; under
 // mpirun -np 2 on p4est meshes, whose cells without a parent on this process
-// would stay zero: none may). Then Hertz at 6 refinements with CG + AMG, the
-// automatic coarser levels (three since Nested iteration/Coarsest level dofs
-// is 300), with and without the carried displacements: the same
+// would stay zero: none may). Then Hertz at 6 refinements with CG + AMG, two
+// coarser levels, with and without the carried displacements: the same
 // reactions and displacements to 1e-8 (every solve stops at Linear
 // solver/Tolerance of its right-hand side either way), and the first fine
 // solve takes at most 0.9 of the CG iterations it takes from zero.

@@ -126,7 +126,7 @@ namespace hrcontact
                       "displacement dofs (their solves cost less than "
                       "building the coarse meshes).");
     prm.declare_entry("Coarsest level dofs",
-                      "300",
+                      "1000",
                       Patterns::Double(0),
                       "automatic: the coarsest level keeps at least about "
                       "this many displacement dofs. The coarsest level starts "
@@ -134,9 +134,8 @@ namespace hrcontact
                       "steps; one more, smaller level below it costs little "
                       "and saves most of them (doc/benchmarks.md: 2000 left "
                       "Hertz refinement 7 with a 6,338-dof coarsest level of "
-                      "38 Newton steps; 1000 with a 1,634-dof one of 25 "
-                      "steps, 0.13 s, where 300 adds a 434-dof level of 23 "
-                      "steps and the two take 0.03-0.06 s).");
+                      "38 Newton steps and the 3D block at 807k with a "
+                      "14,553-dof one of 18).");
     prm.declare_entry(
       "Coarse level tolerance",
       "1e-5",

@@ -108,7 +108,7 @@ namespace hrcontact
     /** -1: automatic. */
     int    coarse_levels          = -1;
     double minimum_dofs           = 2e4;
-    double coarsest_level_dofs    = 300;
+    double coarsest_level_dofs    = 1e3;
     double coarse_level_tolerance = 1e-5;
     /** CG's first solve on the finer level starts from the coarser level's
      * displacements. */
