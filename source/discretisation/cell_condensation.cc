@@ -7,15 +7,12 @@ namespace hrcontact
   using namespace dealii;
 
   void
-  CellCondensation::factorise(const FullMatrix<double> &F,
-                              const FullMatrix<double> &B)
+  CellCondensation::factorise(const FullMatrix<double> &F)
   {
     n = F.m();
-    m = B.m();
+    m = 0;
     AssertDimension(F.n(), n);
-    AssertDimension(B.n(), n);
     L.assign(n * n, 0.);
-    Y.resize(n * m);
     cholesky = true;
     for (unsigned int i = 0; i < n && cholesky; ++i)
       for (unsigned int j = 0; j <= i; ++j)
@@ -41,6 +38,19 @@ namespace hrcontact
       {
         F_inverse.reinit(n, n);
         F_inverse.invert(F);
+      }
+  }
+
+  void
+  CellCondensation::factorise(const FullMatrix<double> &F,
+                              const FullMatrix<double> &B)
+  {
+    factorise(F);
+    m = B.m();
+    AssertDimension(B.n(), n);
+    Y.resize(n * m);
+    if (!cholesky)
+      {
         FullMatrix<double> R(n, m);
         F_inverse.mTmult(R, B);
         for (unsigned int i = 0; i < n; ++i)

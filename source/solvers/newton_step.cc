@@ -1600,7 +1600,7 @@ namespace hrcontact
             const auto &du = b.displacement_dofs;
             const auto &ds = b.stress_dofs;
             if (!(b.same_as_previous && have_factor))
-              condensation.factorise(b.F, b.B);
+              condensation.factorise(b.F);
             have_factor = true;
             // s_c = F_c^{-1} (B_c^T u - d_c), d_c a material Newton step's
             // strain term.

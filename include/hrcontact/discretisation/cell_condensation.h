@@ -21,17 +21,25 @@ namespace hrcontact
    * F_c and multiplying (Hertz refinement 7: the condensed path's cell loop
    * took 2.2-2.6 times the Q1 floor's instead of 3.2 times). Written here
    * rather than through LAPACK: the blocks are 12 x 12 (48 x 48 in 3D), where
-   * a call costs more than the arithmetic. A block that is not positive
+   * a call costs more than the arithmetic; and rather than with
+   * FullMatrix::cholesky, which accepts a zero pivot and has no triangular
+   * solves for several right-hand sides. A block that is not positive
    * definite to round-off (a degenerate compliance) falls back to the
    * inverse, which gives the same products where it exists.
    */
   class CellCondensation
   {
   public:
-    /** Factorise F (n x n) and form Y from B (m x n). */
+    /** Factorise F (n x n) and form Y from B (m x n): for stiffness() and
+     * recovery(). */
     void
     factorise(const dealii::FullMatrix<double> &F,
               const dealii::FullMatrix<double> &B);
+
+    /** Factorise F only: for solve() alone (the final stress recovery),
+     * without the work of Y. */
+    void
+    factorise(const dealii::FullMatrix<double> &F);
 
     /** K_c = B F^{-1} B^T (m x m), symmetric. */
     void
