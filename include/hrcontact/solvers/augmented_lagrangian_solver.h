@@ -148,7 +148,10 @@ namespace hrcontact
     double       eps_min = 1e-12, eps_max = 1e-2;
     double       absolute_tolerance = 0, relative_tolerance = 1e-10;
     unsigned int max_updates = 100, max_newton_steps = 50;
-    double       max_penalty_growth = 1e16;
+    /** Whether the Newton steps after a carried start also update the
+     * multipliers of the rows that keep their branch (eq. 48). */
+    bool   update_carried_multipliers = true;
+    double max_penalty_growth         = 1e16;
 
     /**
      * The law of a Q row: the row's own law (EquilibriumRow::law), else
