@@ -512,6 +512,7 @@ namespace hrcontact
     HRProblem<dim> coarse(coarse_parameters, mpi_communicator);
     coarse.scene.global_refinements = scene.global_refinements - 1;
     coarse.nested.coarse_levels     = levels - 1;
+    coarse.finest_level             = false;
     coarse.reduction.path           = path_name;
     coarse.output.time_floor        = false;
     coarse.output.time_linear_solve = false;
@@ -575,7 +576,8 @@ namespace hrcontact
                                                      *coarse.results().contact,
                                                      system,
                                                      std::pow(2., 1. - dim),
-                                                     compliance_scale));
+                                                     compliance_scale,
+                                                     !finest_level));
     linear_solver.starts_from_coarser_level = true;
     // CG's first guess: the coarser answer, about an h^2 error away in
     // displacement (Hertz refinement 9: the first fine solve takes 77 CG
@@ -699,6 +701,7 @@ namespace hrcontact
             start.alpha           = last.alpha;
             start.p               = last.p;
             start.tolerance_scale = last.tolerance_scale;
+            start.scale_per_level = last.scale_per_level;
             start.origin          = "the last material step's state";
             contact_solver.start_from(start);
           }

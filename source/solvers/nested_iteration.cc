@@ -13,7 +13,8 @@ namespace hrcontact
                          const ContactIteration  &coarse_state,
                          const EquilibriumSystem &fine,
                          const double             reaction_scale,
-                         const double             compliance_scale)
+                         const double             compliance_scale,
+                         const bool               may_measure_scale)
   {
     const unsigned int nc = coarse.contact_rows.size(),
                        nf = fine.contact_rows.size();
@@ -51,7 +52,21 @@ namespace hrcontact
     };
 
     ContactStart start;
-    start.tolerance_scale = coarse_state.tolerance_scale * reaction_scale;
+    if (coarse_state.scale_per_level > 0)
+      {
+        start.tolerance_scale =
+          coarse_state.tolerance_scale * coarse_state.scale_per_level;
+        start.scale_per_level = coarse_state.scale_per_level;
+      }
+    else if (may_measure_scale)
+      {
+        // Measured on this level against the coarser level's trial scale.
+        start.tolerance_scale     = coarse_state.tolerance_scale;
+        start.measure_trial_scale = true;
+      }
+    else
+      start.tolerance_scale = coarse_state.tolerance_scale * reaction_scale;
+    start.smallest_scale_per_level = reaction_scale;
     start.mu.assign(nf, 0.);
     start.alpha.assign(nf, 0.);
     start.p.assign(nf, 0.);

@@ -163,6 +163,10 @@ namespace hrcontact
     PostprocessorManager<dim> postprocessors;
     OutputSettings            output;
     NestedIterationSettings   nested;
+    /** false for the coarser levels nested iteration solves first: only
+     * those measure how the tolerance's force scale shrinks per level (a
+     * trial solve of their own), the scene's mesh never pays for it. */
+    bool finest_level = true;
     /** Newton's method on a nonlinear law's complementary energy (unused
      * for a linear one). */
     MaterialIteration material_iteration;

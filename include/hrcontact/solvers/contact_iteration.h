@@ -92,6 +92,10 @@ namespace hrcontact
     /** The force the relative tolerance is measured against (the load and
      * the first solve's reactions). */
     double tolerance_scale = 0;
+    /** Nested iteration: how much the trial reactions' scale shrinks per
+     * level of refinement, measured on the first carried level (0: not
+     * measured; see ContactStart::measure_trial_scale). */
+    double scale_per_level = 0;
   };
 } // namespace hrcontact
 

@@ -29,6 +29,17 @@ namespace hrcontact
      * stops where it would have from its own trial solution; 0: none.
      */
     double tolerance_scale = 0;
+    /**
+     * Solve this level's trial once more, before the carried start, to take
+     * its reactions as the force scale and their ratio to the coarser
+     * level's (tolerance_scale, then) as scale_per_level for the levels
+     * above. Set for the first level that starts from a coarser one.
+     */
+    bool measure_trial_scale = false;
+    /** The factor tolerance_scale takes per level (0: unknown yet), and the
+     * range a measured one is kept in: the tributary area (reactions of a
+     * smooth pressure) to 1 (a concentrated reaction). */
+    double scale_per_level = 0, smallest_scale_per_level = 0;
     /** Where the state comes from, for the log line of the solve it starts. */
     std::string origin = "the coarser level's state";
     /** Whether it holds one entry per Q row of a system. */
@@ -49,14 +60,22 @@ namespace hrcontact
    * the boundary there, and a node that existed on the coarse mesh takes
    * its own state). Nodal reactions scale with the tributary area,
    * `reaction_scale` (2^{1-dim} per level of uniform refinement); the
-   * compliance with the nodal compliance, `compliance_scale`.
+   * compliance with the nodal compliance, `compliance_scale`. The force
+   * scale of the relative tolerance takes the coarser level's measured
+   * ContactIteration::scale_per_level; where there is none yet (the coarser
+   * level started from its own trial) this level measures it
+   * (ContactStart::measure_trial_scale) if `may_measure_scale` (it is not
+   * the scene's own mesh), else takes `reaction_scale`: the largest trial
+   * reactions sit at the edges of the glued zone, where they shrink more slowly
+   * than the tributary area (Hertz: by 0.56-0.60 per level, not 0.5).
    */
   ContactStart
   transfer_contact_state(const EquilibriumSystem &coarse,
                          const ContactIteration  &coarse_state,
                          const EquilibriumSystem &fine,
                          const double             reaction_scale,
-                         const double             compliance_scale);
+                         const double             compliance_scale,
+                         const bool               may_measure_scale);
 
   /**
    * Nested iteration over the levels of uniform refinement: the contact
