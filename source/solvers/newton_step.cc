@@ -1487,27 +1487,6 @@ namespace hrcontact
           list.set("aggregation: aux: threshold",
                    settings.coordinate_threshold);
         }
-      if (const char *env = std::getenv("HRC_ML"))
-        {
-          std::string all(env);
-          std::size_t pos = 0;
-          while (pos < all.size())
-            {
-              std::size_t end = all.find(';', pos);
-              if (end == std::string::npos) end = all.size();
-              const std::string kv = all.substr(pos, end - pos);
-              pos = end + 1;
-              const std::size_t eq = kv.find('=');
-              const std::string k = kv.substr(0, eq), v = kv.substr(eq + 1);
-              const std::string type = k.substr(0, 2);
-              const std::string key = k.substr(2);
-              if (type == "i:") list.set(key, std::stoi(v));
-              else if (type == "d:") list.set(key, std::stod(v));
-              else if (type == "b:") list.set(key, v == "true");
-              else list.set(key, v);
-            }
-          if (std::getenv("HRC_ML_PRINT")) list.print(std::cout);
-        }
       d.preconditioner.initialize(M, list);
       d.built = true;
       ++statistics.preconditioner_setups;
@@ -1556,8 +1535,6 @@ namespace hrcontact
       return std::make_pair(true, control.last_step());
     };
     auto [converged, steps] = run_cg();
-    if (std::getenv("HRC_CGLOG") && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cout << "      [cg] n=" << rhs.size() << " steps " << steps << " tol/rhs " << tolerance / rhs_norm << " fresh " << fresh << std::endl;
     if (!converged && !fresh)
       {
         // A hierarchy from an earlier Newton step no longer serves: rebuild.
