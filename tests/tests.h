@@ -37,6 +37,37 @@ namespace hrcontact_tests
   }
 
   /**
+   * max |a - b| / max |b| of two runs' final Q-row reactions and of their
+   * displacements (owned entries, the largest over the processes): the same
+   * answer reached two ways.
+   */
+  template <int dim>
+  std::array<double, 2>
+  answer_differences(const hrcontact::Results<dim> &a,
+                     const hrcontact::Results<dim> &b)
+  {
+    double p_difference = 0, p_scale = 0;
+    for (unsigned int i = 0; i < a.contact->p.size(); ++i)
+      {
+        p_difference =
+          std::max(p_difference, std::abs(a.contact->p[i] - b.contact->p[i]));
+        p_scale = std::max(p_scale, std::abs(b.contact->p[i]));
+      }
+    double u_difference = 0, u_scale = 0;
+    for (const auto i : a.displacement.locally_owned_elements())
+      {
+        u_difference =
+          std::max(u_difference,
+                   std::abs(a.displacement(i) - b.displacement(i)));
+        u_scale = std::max(u_scale, std::abs(b.displacement(i)));
+      }
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    return {{p_difference / p_scale,
+             dealii::Utilities::MPI::max(u_difference, comm) /
+               dealii::Utilities::MPI::max(u_scale, comm)}};
+  }
+
+  /**
    * subsection Supports prescribing u = eps x on every boundary id 0 ..
    * 2 dim - 1 of a colorized box (eps in its upper-left dim x dim block),
    * to 17 digits: the displacement patch test.
