@@ -135,11 +135,13 @@ namespace hrcontact
       "to carry the contact state only). A number needs as many Global "
       "refinements.");
     prm.declare_entry("Minimum dofs",
-                      "20000",
+                      "5000",
                       Patterns::Double(0),
                       "automatic: no nested iteration for scenes with fewer "
                       "displacement dofs (their solves cost less than "
-                      "building the coarse meshes).");
+                      "building the coarse meshes). Hertz at 6,338 dofs: "
+                      "0.35 s and 2 updates with a coarser level of 1,634, "
+                      "0.58 s and 7 updates from the trial.");
     prm.declare_entry("Coarsest level dofs",
                       "1000",
                       Patterns::Double(0),
