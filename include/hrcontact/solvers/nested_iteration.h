@@ -25,8 +25,9 @@ namespace hrcontact
     std::vector<double> mu, alpha, p;
     /**
      * The force scale of the relative tolerance (ContactIteration::
-     * tolerance_scale, carried like a reaction), so that the finer level
-     * stops where it would have from its own trial solution; 0: none.
+     * tolerance_scale, carried at scale_per_level, or the coarser level's
+     * own while this level measures it), so that the finer level stops
+     * about where it would have from its own trial solution; 0: none.
      */
     double tolerance_scale = 0;
     /**
@@ -67,7 +68,7 @@ namespace hrcontact
    * (ContactStart::measure_trial_scale) if `may_measure_scale` (it is not
    * the scene's own mesh), else takes `reaction_scale`: the largest trial
    * reactions sit at the edges of the glued zone, where they shrink more slowly
-   * than the tributary area (Hertz: by 0.56-0.60 per level, not 0.5).
+   * than the tributary area (Hertz: by 0.56-0.63 per level, not 0.5).
    */
   ContactStart
   transfer_contact_state(const EquilibriumSystem &coarse,
