@@ -14,7 +14,8 @@
 // must give the same augmented Lagrangian history (alpha sequence to 1e-12,
 // released sets, p to 1e-9 of max |p|) and the same displacements and stresses
 // (each process compares its own cells). The partition must give every dof and
-// cell exactly one owner and each process a share.
+// cell exactly one owner and each process a share, and every contact row one
+// owner (the process of its node; ContactRowPartition).
 
 #include <deal.II/base/mpi.h>
 
@@ -119,6 +120,18 @@ compare(const std::string &scene, const std::string &extra)
   const bool distributed_mesh =
     dynamic_cast<const dealii::parallel::distributed::Triangulation<dim> *>(
       &P.triangulation()) != nullptr;
+
+  // The contact rows: each owned by the process of its node, each process
+  // updating only the rows it sees (owned and ghost).
+  const unsigned int n_rows = P.system.contact_rows.size();
+  const bool         rows_owned_once =
+    sum(P.contact->rows_owned, MPI_COMM_WORLD) == n_rows &&
+    min(int(P.contact->rows_owned <= P.contact->rows_seen &&
+            P.contact->rows_seen <= n_rows),
+        MPI_COMM_WORLD) == 1;
+  const unsigned int most_seen    = max(P.contact->rows_seen, MPI_COMM_WORLD);
+  const unsigned int fewest_owned = min(P.contact->rows_owned, MPI_COMM_WORLD);
+  const unsigned int most_owned   = max(P.contact->rows_owned, MPI_COMM_WORLD);
 
   // Length scale for matching positions.
   double size = 0;
@@ -234,6 +247,10 @@ compare(const std::string &scene, const std::string &extra)
       << " processes, distributed mesh: " << (distributed_mesh ? "yes" : "NO")
       << ", partition complete: " << (complete ? "yes" : "NO")
       << ", every process owns dofs: " << (shared ? "yes" : "NO")
+      << "\n  contact rows: " << n_rows
+      << ", each owned by one process: " << (rows_owned_once ? "yes" : "NO")
+      << " (" << fewest_owned << " to " << most_owned << " a process), at most "
+      << most_seen << " seen by one"
       << "\n  rows, nodes and cells matched by position: "
       << (rows_match && nodes_match && cells_match ? "yes" : "NO") << "\n  "
       << a.history.size() << " multiplier updates, " << a.total_newton_steps

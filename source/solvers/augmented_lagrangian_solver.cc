@@ -224,14 +224,44 @@ namespace hrcontact
 
   namespace
   {
-    double
-    norm_of(const std::vector<double> &v)
+    /**
+     * The sets (of branches, of rows in contact) an iteration has solved,
+     * each process keeping the part of its own rows: a set was solved
+     * before when every process finds its part at the same earlier step.
+     */
+    template <typename Key>
+    class SolvedSets
     {
-      double sum = 0;
-      for (const double x : v)
-        sum += x * x;
-      return std::sqrt(sum);
-    }
+    public:
+      explicit SolvedSets(const ContactRowPartition &ownership)
+        : ownership(ownership)
+      {}
+      /** Record key; false if it was solved before. */
+      bool
+      insert(const Key &key)
+      {
+        if (!keys.empty())
+          {
+            std::vector<bool> same(keys.size());
+            for (unsigned int j = 0; j < keys.size(); ++j)
+              same[j] = (keys[j] == key);
+            same = ownership.all(same);
+            if (std::find(same.begin(), same.end(), true) != same.end())
+              return false;
+          }
+        keys.push_back(key);
+        return true;
+      }
+      void
+      clear()
+      {
+        keys.clear();
+      }
+
+    private:
+      const ContactRowPartition &ownership;
+      std::vector<Key>           keys;
+    };
   } // namespace
 
   void
@@ -249,10 +279,17 @@ namespace hrcontact
     released_history.push_back(released);
 
     AugmentedLagrangianStep step;
-    step.k              = k;
-    step.newton_steps   = newton_steps;
-    step.alpha_min      = *std::min_element(alpha.begin(), alpha.end());
-    step.alpha_max      = *std::max_element(alpha.begin(), alpha.end());
+    step.k            = k;
+    step.newton_steps = newton_steps;
+    double alpha_min  = std::numeric_limits<double>::infinity();
+    double alpha_max  = -alpha_min;
+    for (const unsigned int i : ownership->owned())
+      {
+        alpha_min = std::min(alpha_min, alpha[i]);
+        alpha_max = std::max(alpha_max, alpha[i]);
+      }
+    step.alpha_min      = ownership->min(alpha_min);
+    step.alpha_max      = ownership->max(alpha_max);
     step.eps_k          = eps_k;
     step.norm_pbar      = norm;
     step.active_changes = changes;
@@ -279,7 +316,7 @@ namespace hrcontact
     bool         capped = false;
     if (per_constraint)
       {
-        for (unsigned int i = 0; i < penalty.size(); ++i)
+        for (const unsigned int i : ownership->relevant())
           if (std::abs(r[i]) > delta * std::abs(r_previous[i]))
             {
               capped |= (rho * penalty[i] > cap);
@@ -287,15 +324,16 @@ namespace hrcontact
             }
       }
     else if (norm > delta * norm_previous)
-      for (double &a : penalty)
+      for (const unsigned int i : ownership->relevant())
         {
-          capped |= (rho * a > cap);
-          a *= rho;
+          capped |= (rho * penalty[i] > cap);
+          penalty[i] *= rho;
         }
+    capped = !ownership->all(!capped);
     if (capped)
       {
-        for (double &a : penalty)
-          a = std::min(a, cap);
+        for (const unsigned int i : ownership->relevant())
+          penalty[i] = std::min(penalty[i], cap);
         diverged = true;
       }
     return !capped;
@@ -333,6 +371,7 @@ namespace hrcontact
   {
     relinearisation = nullptr;
     iterate(system, path, load_scale, log);
+    gather_state();
     set_outcome();
     return converged;
   }
@@ -347,6 +386,7 @@ namespace hrcontact
     relinearisation = &relinearise;
     iterate(system, path, load_scale, log);
     relinearisation = nullptr;
+    gather_state();
     set_outcome();
     return converged;
   }
@@ -364,13 +404,52 @@ namespace hrcontact
                                  SolveOutcome::iteration_limit;
   }
 
+  void
+  AugmentedLagrangianSolver::gather_state()
+  {
+    if (!ownership || !ownership->distributed())
+      return;
+    // Once per solve: the complete state for the tables, the nested
+    // transfer and the next solve's start, each row from its owner.
+    for (auto *v : {&p, &mu, &alpha, &opening})
+      ownership->gather(*v);
+    ownership->gather(released);
+    std::vector<double> spring(pieces.size()), offset(pieces.size()),
+      compliance(pieces.size()), branch(pieces.size());
+    for (unsigned int i = 0; i < pieces.size(); ++i)
+      {
+        spring[i]     = pieces[i].spring;
+        offset[i]     = pieces[i].offset;
+        compliance[i] = pieces[i].compliance;
+        branch[i]     = pieces[i].branch;
+      }
+    for (auto *v : {&spring, &offset, &compliance, &branch})
+      ownership->gather(*v);
+    for (unsigned int i = 0; i < pieces.size(); ++i)
+      {
+        pieces[i].spring     = (spring[i] != 0);
+        pieces[i].offset     = offset[i];
+        pieces[i].compliance = compliance[i];
+        pieces[i].branch     = static_cast<unsigned int>(branch[i]);
+      }
+    for (auto *history_of : {&p_history, &mu_history, &alpha_history})
+      for (auto &v : *history_of)
+        ownership->gather(v);
+    for (auto &v : released_history)
+      ownership->gather(v);
+  }
+
   bool
   AugmentedLagrangianSolver::found_floating_body(
     const std::function<bool(unsigned int)> &is_free,
     const unsigned int                       update)
   {
+    // Each process asks about the rows it owns.
     for (const BodyHeldByContact &body : held_only_by_contact)
-      if (std::all_of(body.rows.begin(), body.rows.end(), is_free))
+      if (ownership->all(std::all_of(
+            body.rows.begin(), body.rows.end(), [&](const unsigned int i) {
+              return !ownership->is_owned(i) || is_free(i);
+            })))
         {
           floating        = true;
           floating_update = update;
@@ -504,7 +583,15 @@ namespace hrcontact
                                      std::ostream            &log)
   {
     const unsigned int nq = system.contact_rows.size();
-    std::vector<bool>  unilateral(nq);
+    // The rows this process owns and sees: every loop below runs over the
+    // rows it sees, every norm, count and decision is a reduction over the
+    // owned ones (ContactRowPartition).
+    ownership = &path.row_partition();
+    AssertThrow(ownership->n_rows() == nq, ExcInternalError());
+    const std::vector<unsigned int> &rows_here = ownership->relevant();
+    rows_owned                                 = ownership->owned().size();
+    rows_seen                                  = rows_here.size();
+    std::vector<bool> unilateral(nq);
     law.assign(nq, nullptr);
     for (unsigned int i = 0; i < nq; ++i)
       {
@@ -538,7 +625,9 @@ namespace hrcontact
     // Step 0: trial solution, every constraint bilateral with w_n = g; or
     // the carried state of a coarser level (start_from): its multipliers and
     // compliances, and the pieces its reactions select.
-    pieces.resize(nq);
+    pieces.assign(nq, ContactPiece());
+    for (unsigned int i = 0; i < nq; ++i)
+      pieces[i] = law[i]->trial_piece();
     const bool started = has_start;
     has_start          = false;
     scale_per_level    = started ? start.scale_per_level : 0.;
@@ -551,12 +640,11 @@ namespace hrcontact
     double measured_scale = 0;
     if (started && start.measure_trial_scale)
       {
-        for (unsigned int i = 0; i < nq; ++i)
-          pieces[i] = law[i]->trial_piece();
         path.solve(pieces, p);
         measured_scale = std::abs(load_scale);
-        for (unsigned int i = 0; i < nq; ++i)
+        for (const unsigned int i : ownership->owned())
           measured_scale = std::max(measured_scale, std::abs(p[i]));
+        measured_scale = ownership->max(measured_scale);
         if (start.tolerance_scale > 0)
           scale_per_level =
             std::min(1.,
@@ -568,24 +656,20 @@ namespace hrcontact
         AssertThrow(start.fits(system),
                     ExcMessage("the carried contact state does not fit the "
                                "rows of this system"));
-        for (unsigned int i = 0; i < nq; ++i)
+        for (const unsigned int i : rows_here)
           if (law[i]->has_multiplier())
             {
               mu[i]     = start.mu[i];
               alpha[i]  = (start.alpha[i] > 0) ? start.alpha[i] : initial_alpha;
               pieces[i] = law[i]->piece(start.p[i], mu[i], alpha[i]);
             }
-          else
-            pieces[i] = law[i]->trial_piece();
       }
-    else
-      for (unsigned int i = 0; i < nq; ++i)
-        pieces[i] = law[i]->trial_piece();
     path.solve(pieces, p);
 
     double scale = std::abs(load_scale);
-    for (unsigned int i = 0; i < nq; ++i)
+    for (const unsigned int i : ownership->owned())
       scale = std::max(scale, std::abs(p[i]));
+    scale = ownership->max(scale);
     if (measured_scale > 0)
       scale = std::max(scale, measured_scale);
     else if (started)
@@ -597,13 +681,24 @@ namespace hrcontact
     const bool pure_penalty = (regularisation == Regularisation::pure_penalty);
     // Three digits on this line, whatever the stream held before.
     const std::streamsize precision = log.precision(3);
+    // Under MPI: how the rows are shared (reductions on every process).
+    std::string shares;
+    if (ownership->distributed())
+      {
+        const double owned = rows_owned, seen = rows_seen;
+        shares = " (each process owns " +
+                 std::to_string(unsigned(ownership->min(owned))) + " to " +
+                 std::to_string(unsigned(ownership->max(owned))) +
+                 " and updates at most " +
+                 std::to_string(unsigned(ownership->max(seen))) + ")";
+      }
     log << "  augmented Lagrangian ("
         << (regularisation == Regularisation::consistent ? "consistent" :
             regularisation == Regularisation::macaulay   ? "Macaulay" :
             pure_penalty                                 ? "pure penalty" :
                                                            "displacement")
         << ", " << (diagonal ? "diagonal" : "classical") << "): " << nq
-        << " contact constraints, initial "
+        << " contact constraints" << shares << ", initial "
         << (regularisation == Regularisation::displacement ? "stiffness beta " :
                                                              "alpha ")
         << (regularisation == Regularisation::displacement ? 1 / initial_alpha :
@@ -635,12 +730,20 @@ namespace hrcontact
               law[i]->name() + "'. Take the consistent augmented Lagrangian.");
         return solve_displacement(system, unilateral, path, timer, log);
       }
+    // Each process's part of the state: the rows it sees.
+    const auto here = [&](const std::vector<double> &v) {
+      std::vector<double> part;
+      part.reserve(rows_here.size());
+      for (const unsigned int i : rows_here)
+        part.push_back(v[i]);
+      return part;
+    };
 
     // The piece each row had in the last Newton step, and the value of its
     // relation w - g there: the contact force term that solve balanced.
     std::vector<ContactPiece> solved = pieces;
     std::vector<double>       balanced(nq, 0.);
-    for (unsigned int i = 0; i < nq; ++i)
+    for (const unsigned int i : rows_here)
       balanced[i] = solved[i].relation(p[i]);
 
     std::vector<double> pbar(nq, 0.), pbar_previous(nq, 0.);
@@ -682,21 +785,23 @@ namespace hrcontact
             mu_solved    = mu;
             alpha_solved = alpha;
             // pbar with the multipliers and compliances the solve used.
-            for (unsigned int i = 0; i < nq; ++i)
+            for (const unsigned int i : rows_here)
               pbar[i] = law[i]->has_multiplier() ?
                           law[i]->residual(p[i], mu[i], alpha[i]) :
                           0.;
-            const double norm = norm_of(pbar);
+            const double norm = ownership->norm(pbar);
 
             unsigned int changes = 0;
-            for (unsigned int i = 0; i < nq; ++i)
+            for (const unsigned int i : rows_here)
               {
                 const ContactPiece current =
                   law[i]->piece(p[i], mu[i], alpha[i]);
-                changes += (current.branch != pieces[i].branch);
+                changes += (current.branch != pieces[i].branch &&
+                            ownership->is_owned(i));
                 pieces[i]   = current;
                 released[i] = law[i]->is_free(current.branch);
               }
+            changes = ownership->sum(changes);
 
             // Step 4: multiplier update (eq. 48), mu <- mu - alpha pbar =
             // dL/dp; afterwards mu = w_n - g. The pure penalty keeps mu = 0.
@@ -707,14 +812,14 @@ namespace hrcontact
             // updating mu by its reaction would guess a displacement that the
             // next step undoes, and the set then cycles (measured on lift-off).
             if (!pure_penalty)
-              for (unsigned int i = 0; i < nq; ++i)
+              for (const unsigned int i : rows_here)
                 if (law[i]->has_multiplier())
                   mu[i] = diagonal ? law[i]->multiplier_after_step(solved[i],
                                                                    p[i],
                                                                    mu[i],
                                                                    alpha[i]) :
                                      mu[i] - alpha[i] * pbar[i];
-            for (unsigned int i = 0; i < nq; ++i)
+            for (const unsigned int i : rows_here)
               // w_n - g: the updated multiplier for a consistent law; released
               // rows of the pure penalty are springs anchored at the gap (mu =
               // 0), so they open by -alpha p.
@@ -739,8 +844,9 @@ namespace hrcontact
             // else p satisfies another relation, and a small pbar (a stop held
             // at the estimate mu) says nothing about w.
             bool same_pieces = true;
-            for (unsigned int i = 0; i < nq; ++i)
+            for (const unsigned int i : rows_here)
               same_pieces &= (pieces[i].branch == solved[i].branch);
+            same_pieces = ownership->all(same_pieces);
             if (pure_penalty ?
                   (update > 1 && last_inner_exact) :
                   (norm < tolerance_used && (!diagonal || same_pieces) &&
@@ -757,28 +863,43 @@ namespace hrcontact
             // a period of 6 on the bridge stops at alpha_0 = 1e4 c_h).
             if (diagonal)
               {
-                std::vector<unsigned int> branches(nq);
+                // Each process compares the rows it sees; an earlier update
+                // matches when it matches on every process.
+                std::vector<unsigned int> branches;
                 double                    mu_scale = 0;
-                for (unsigned int i = 0; i < nq; ++i)
+                for (const unsigned int i : rows_here)
                   {
-                    branches[i] = pieces[i].branch;
-                    mu_scale    = std::max(mu_scale, std::abs(mu[i]));
+                    branches.push_back(pieces[i].branch);
+                    mu_scale = std::max(mu_scale, std::abs(mu[i]));
                   }
-                for (const auto &[b, a, m] : visited)
-                  if (b == branches && a == alpha)
-                    {
-                      double difference = 0;
-                      for (unsigned int i = 0; i < nq; ++i)
-                        difference =
-                          std::max(difference, std::abs(m[i] - mu[i]));
-                      periodic |= (difference <= 1e-12 * mu_scale);
-                    }
+                mu_scale                         = ownership->max(mu_scale);
+                const std::vector<double> a_here = here(alpha);
+                const std::vector<double> m_here = here(mu);
+                std::vector<bool>         same(visited.size());
+                std::vector<double>       difference(visited.size(), 0.);
+                for (unsigned int j = 0; j < visited.size(); ++j)
+                  {
+                    const auto &[b, a, m] = visited[j];
+                    same[j]               = (b == branches && a == a_here);
+                    for (unsigned int r = 0; r < m.size(); ++r)
+                      difference[j] =
+                        std::max(difference[j], std::abs(m[r] - m_here[r]));
+                  }
+                if (!visited.empty())
+                  {
+                    same = ownership->all(same);
+                    for (unsigned int j = 0; j < visited.size(); ++j)
+                      {
+                        const double largest = ownership->max(difference[j]);
+                        periodic |= same[j] && largest <= 1e-12 * mu_scale;
+                      }
+                  }
                 if (periodic)
                   {
                     cycled = true;
                     break;
                   }
-                visited.emplace_back(branches, alpha, mu);
+                visited.emplace_back(branches, a_here, m_here);
               }
             // Floating: every row with a multiplier on its free branch and none
             // holding (a released row of the consistent AL may still carry
@@ -832,10 +953,10 @@ namespace hrcontact
         // e = (w - g of the piece at p) - balanced, falls by eps_k (the
         // diagonal scheme: one step). A step that keeps every branch gives
         // e = 0 exactly: the piece is quadratic.
-        newton_steps                                     = 0;
-        unsigned int                        step_limit   = max_newton_steps;
-        double                              initial_norm = 0;
-        std::set<std::vector<unsigned int>> solved_sets;
+        newton_steps                                       = 0;
+        unsigned int                          step_limit   = max_newton_steps;
+        double                                initial_norm = 0;
+        SolvedSets<std::vector<unsigned int>> solved_sets(*ownership);
         for (;;)
           {
             std::vector<ContactPiece> active(nq);
@@ -856,7 +977,7 @@ namespace hrcontact
             const bool after_update = newton_steps == 0 && updated &&
                                       !diagonal && !pure_penalty &&
                                       !geometry_changed;
-            for (unsigned int i = 0; i < nq; ++i)
+            for (const unsigned int i : rows_here)
               {
                 active[i] =
                   (after_update && solved[i].spring &&
@@ -873,7 +994,7 @@ namespace hrcontact
                 branches[i] = active[i].branch;
                 e[i]        = active[i].relation(p[i]) - balanced[i];
               }
-            const double e_norm = norm_of(e);
+            const double e_norm = ownership->norm(e);
             if (newton_steps == 0)
               initial_norm = e_norm;
             last_inner_exact = (e_norm == 0);
@@ -894,7 +1015,10 @@ namespace hrcontact
             // A piece depends only on its branches (mu, alpha are fixed
             // here): a set seen before in this inner solve means Newton
             // cycles.
-            if (!solved_sets.insert(branches).second)
+            std::vector<unsigned int> branches_here;
+            for (const unsigned int i : rows_here)
+              branches_here.push_back(branches[i]);
+            if (!solved_sets.insert(branches_here))
               {
                 // In exact arithmetic the smooth pieces cannot cycle; with
                 // CG the residual may no longer fix p to the digits the
@@ -909,7 +1033,7 @@ namespace hrcontact
                     break;
                   }
                 solved_sets.clear();
-                solved_sets.insert(branches);
+                solved_sets.insert(branches_here);
               }
             // After a carried start, the rows that keep their branch take
             // the multiplier update (eq. 48) with the step that switches the
@@ -921,7 +1045,7 @@ namespace hrcontact
             // switches keeps the multiplier its switch was read with.
             if (update_carried_multipliers && started && k == 1 && !diagonal &&
                 !pure_penalty)
-              for (unsigned int i = 0; i < nq; ++i)
+              for (const unsigned int i : rows_here)
                 if (law[i]->has_multiplier() && branches[i] == solved[i].branch)
                   {
                     mu[i] = law[i]->gradient(p[i], mu[i], alpha[i]);
@@ -929,7 +1053,7 @@ namespace hrcontact
                       law[i]->piece_of_branch(branches[i], mu[i], alpha[i]);
                   }
             path.solve(active, p);
-            for (unsigned int i = 0; i < nq; ++i)
+            for (const unsigned int i : rows_here)
               balanced[i] = active[i].relation(p[i]);
             solved = active;
             ++newton_steps;
@@ -960,10 +1084,11 @@ namespace hrcontact
     // -gamma/beta); otherwise it carries nothing (compliance infinity, so
     // the path adds no spring). Bilateral rows stay held at w_n = g. Start:
     // gamma from the trial reactions, w_n = g.
-    const unsigned int  nq    = unilateral.size();
-    const double        beta0 = 1. / initial_alpha;
+    const unsigned int               nq        = unilateral.size();
+    const std::vector<unsigned int> &rows_here = ownership->relevant();
+    const double                     beta0     = 1. / initial_alpha;
     std::vector<double> gamma(nq, 0.), beta(nq, beta0), gap(nq, 0.);
-    for (unsigned int i = 0; i < nq; ++i)
+    for (const unsigned int i : rows_here)
       if (unilateral[i])
         gamma[i] = std::max(0., -p[i]);
 
@@ -988,20 +1113,20 @@ namespace hrcontact
       {
         // Step 3: Newton steps on u for fixed gamma, beta (the diagonal
         // scheme: one).
-        unsigned int                newton_steps = 0;
-        double                      initial_norm = 0;
-        std::set<std::vector<bool>> solved_sets;
+        unsigned int                  newton_steps = 0;
+        double                        initial_norm = 0;
+        SolvedSets<std::vector<bool>> solved_sets(*ownership);
         for (;;)
           {
             std::vector<double> e(nq);
-            for (unsigned int i = 0; i < nq; ++i)
+            for (const unsigned int i : rows_here)
               {
                 contact[i] = !unilateral[i] || spring_force(i) > 0;
                 const double term =
                   (unilateral[i] && contact[i]) ? spring_force(i) : 0.;
                 e[i] = unilateral[i] ? term - balanced[i] : 0.;
               }
-            const double e_norm = first ? 1. : norm_of(e);
+            const double e_norm = first ? 1. : ownership->norm(e);
             if (newton_steps == 0)
               initial_norm = e_norm;
             if (e_norm == 0 ||
@@ -1019,7 +1144,7 @@ namespace hrcontact
             if (newton_steps == 0 && !first && !diagonal)
               contact = solved_contact;
             std::vector<bool> springs(nq, false);
-            for (unsigned int i = 0; i < nq; ++i)
+            for (const unsigned int i : rows_here)
               if (unilateral[i])
                 {
                   springs[i]    = true;
@@ -1029,7 +1154,10 @@ namespace hrcontact
             if (found_floating_body(
                   [&contact](const unsigned int i) { return !contact[i]; }, k))
               break;
-            if (!solved_sets.insert(contact).second)
+            std::vector<bool> contact_here;
+            for (const unsigned int i : rows_here)
+              contact_here.push_back(contact[i]);
+            if (!solved_sets.insert(contact_here))
               {
                 cycled = true;
                 break;
@@ -1037,7 +1165,7 @@ namespace hrcontact
             path.solve(springs, path_mu, path_alpha, p);
             solved_contact = contact;
             path.contact_displacements(w);
-            for (unsigned int i = 0; i < nq; ++i)
+            for (const unsigned int i : rows_here)
               {
                 gap[i] = unilateral[i] ?
                            w[i] - system.rows[system.contact_rows[i]].value :
@@ -1059,19 +1187,21 @@ namespace hrcontact
         // measure is the full one of eq. 29, max(-gamma, beta (w - g)): it
         // sees such a row penetrate.
         unsigned int changes = 0;
-        for (unsigned int i = 0; i < nq; ++i)
+        for (const unsigned int i : rows_here)
           {
             change[i] =
               unilateral[i] ? std::max(-gamma[i], beta[i] * gap[i]) : 0.;
             gamma[i] = (unilateral[i] && solved_contact[i]) ?
                          std::max(0., spring_force(i)) :
                          0.;
-            changes += (contact[i] != contact_previous[i]);
+            changes +=
+              (contact[i] != contact_previous[i] && ownership->is_owned(i));
           }
+        changes           = ownership->sum(changes);
         contact_previous  = contact;
-        const double norm = norm_of(change);
+        const double norm = ownership->norm(change);
 
-        for (unsigned int i = 0; i < nq; ++i)
+        for (const unsigned int i : rows_here)
           {
             mu[i]       = unilateral[i] ? gap[i] : 0.;
             opening[i]  = mu[i];
@@ -1099,14 +1229,14 @@ namespace hrcontact
         // only grow beta and the noise with it: stop and say so.
         {
           double floor = 0;
-          for (unsigned int i = 0; i < nq; ++i)
+          for (const unsigned int i : ownership->owned())
             if (unilateral[i] && contact[i])
               {
                 const double r = 4 * std::numeric_limits<double>::epsilon() *
                                  beta[i] * std::abs(w[i]);
                 floor += r * r;
               }
-          roundoff_floor = std::sqrt(floor);
+          roundoff_floor = std::sqrt(ownership->sum(floor));
           // An iterative solver's tolerance leaves a floor of its own (CG +
           // AMG: far above rounding): the sign is a change that grew by the
           // factor rho with beta, with the set fixed. A direct solver has no
@@ -1128,7 +1258,7 @@ namespace hrcontact
             !update_penalty(
               beta, change, change_previous, norm, norm_previous, beta0))
           break;
-        beta_grew       = (beta != beta_before);
+        beta_grew       = !ownership->all(beta == beta_before);
         norm_previous   = norm;
         change_previous = change;
         eps_k           = inner_tolerance(norm, eps_previous);

@@ -346,6 +346,8 @@ namespace hrcontact
   NullSpaceStep::NullSpaceStep(EquilibriumReduction &reduction)
     : reduction(reduction)
   {
+    // The dense path runs whole on every process: every row is its own.
+    row_ownership = ContactRowPartition(reduction.n_contact_rows());
     prepare();
   }
 
@@ -577,7 +579,8 @@ namespace hrcontact
     // The recovery cells of a lean system on a distributed mesh are owned or
     // ghost cells: their dofs are relevant. Every cell stored (not lean)
     // would include artificial ones.
-    ghosted_u = partition.distributed_mesh && !system.stored_cell.empty();
+    ghosted_u     = partition.distributed_mesh && !system.stored_cell.empty();
+    row_ownership = ContactRowPartition(system, partition);
 
     assemble();
   }
@@ -1036,9 +1039,6 @@ namespace hrcontact
     auto relevant = [&](const EquilibriumRow &row) {
       return partition.relevant.is_element(row.combination.front().first);
     };
-    auto owned = [&](const EquilibriumRow &row) {
-      return partition.owned.is_element(row.combination.front().first);
-    };
     // Held rows per node: the prescribed ones and the held Q rows; springs.
     std::map<unsigned int,
              std::vector<std::pair<const EquilibriumRow *, double>>>
@@ -1050,15 +1050,15 @@ namespace hrcontact
       if (relevant(system.rows[r]))
         held[system.rows[r].node].emplace_back(&system.rows[r],
                                                system.rows[r].value);
-    for (unsigned int i = 0; i < system.contact_rows.size(); ++i)
+    for (const unsigned int i : row_ownership.relevant())
       {
         const EquilibriumRow &row = system.rows[system.contact_rows[i]];
-        if (!pieces[i].spring && relevant(row))
+        if (!pieces[i].spring)
           {
             held[row.node].emplace_back(&row, row.value + pieces[i].offset);
             ++held_q_rows[row.node];
           }
-        else if (pieces[i].spring && owned(row))
+        else if (row_ownership.is_owned(i))
           springs.emplace_back(&row, &pieces[i]);
       }
     // A process sees only its relevant nodes: an error found at one of
@@ -1115,9 +1115,11 @@ namespace hrcontact
     // follow the configuration move it, and a matrix of the old directions
     // would be off by as much). The held values and the spring anchors
     // (g + offset) enter the right-hand side only.
+    // Each process keys the rows it sees; whether the matrix stays is
+    // agreed on by all (its assembly is collective).
     std::vector<double> key;
-    key.reserve(system.contact_rows.size() * (1 + system.dim));
-    for (unsigned int i = 0; i < system.contact_rows.size(); ++i)
+    key.reserve(row_ownership.relevant().size() * (1 + system.dim));
+    for (const unsigned int i : row_ownership.relevant())
       {
         const EquilibriumRow &row = system.rows[system.contact_rows[i]];
         key.push_back(pieces[i].spring ? pieces[i].compliance : -1.);
@@ -1138,7 +1140,8 @@ namespace hrcontact
         // only, the constraints' inhomogeneities eliminated with the kept
         // cells' and springs' matrices as the assembly with the matrix does;
         // and the AMG hierarchy stays valid.
-        const bool same_matrix = d.assembled && d.matrix_key == key;
+        const bool same_matrix =
+          row_ownership.all(d.assembled && d.matrix_key == key);
         if (!same_matrix)
           {
             // The rows the last step changed go back to the fixed part of K.
@@ -1340,27 +1343,24 @@ namespace hrcontact
             s[i] -= recovered_shift[recovered_offset[k] + i];
       }
     // p of each row by the owner of its node, the only process that has
-    // every cell around it on a distributed mesh; the sum replicates p.
+    // every cell around it on a distributed mesh; the rows of ghost nodes
+    // from their owners.
     p.assign(system.contact_rows.size(), 0.);
-    for (unsigned int i = 0; i < system.contact_rows.size(); ++i)
+    for (const unsigned int i : row_ownership.owned())
       {
         const EquilibriumRow &row = system.rows[system.contact_rows[i]];
-        if (owned(row))
+        double                sum = 0;
+        for (std::size_t t = contact_term_start[i];
+             t < contact_term_start[i + 1];
+             ++t)
           {
-            double sum = 0;
-            for (std::size_t t = contact_term_start[i];
-                 t < contact_term_start[i + 1];
-                 ++t)
-              {
-                const StressTerm &term = contact_terms[t];
-                sum += row.combination[term.k].second * term.b *
-                       recovered_stress[term.position];
-              }
-            p[i] = sum - system.row_load(row);
+            const StressTerm &term = contact_terms[t];
+            sum += row.combination[term.k].second * term.b *
+                   recovered_stress[term.position];
           }
+        p[i] = sum - system.row_load(row);
       }
-    if (partition.distributed())
-      Utilities::MPI::sum(p, partition.communicator, p);
+    row_ownership.import_ghosts(p);
   }
 
   void
@@ -1675,19 +1675,19 @@ namespace hrcontact
   CondensedStep::contact_displacements(std::vector<double> &w) const
   {
     // With u on the relevant dofs only, each row by the owner of its node
-    // (whose ghosts hold the node's dofs), summed.
+    // (whose ghosts hold the node's dofs), the rows of ghost nodes from
+    // their owners; with u complete, every row.
     w.assign(system.contact_rows.size(), 0.);
     for (unsigned int i = 0; i < w.size(); ++i)
       {
         const EquilibriumRow &row = system.rows[system.contact_rows[i]];
-        if (ghosted_u &&
-            !partition.owned.is_element(row.combination.front().first))
+        if (ghosted_u && !row_ownership.is_owned(i))
           continue;
         for (unsigned int k = 0; k < row.combination.size(); ++k)
           w[i] += row.direction_component(k) * u(row.combination[k].first);
       }
     if (ghosted_u)
-      Utilities::MPI::sum(w, partition.communicator, w);
+      row_ownership.import_ghosts(w);
   }
 
   void

@@ -47,11 +47,13 @@ namespace hrcontact
     /**
      * A run on the processes of the communicator. With several processes
      * the condensed path runs on a parallel::distributed::Triangulation:
-     * each process assembles and solves for its own cells, and the contact
-     * rows (a surface) and the augmented Lagrangian are replicated; process
-     * 0 writes the result files and each process its piece of
-     * solution.pvtu. The dense null-space path (the serial reference, which
-     * Path = automatic takes for small meshes), a randomly distorted mesh
+     * each process assembles and solves for its own cells and runs the
+     * augmented Lagrangian on the contact rows of its own and ghost nodes
+     * (ContactRowPartition); the rows themselves (a surface) are classified
+     * alike on every process, and the final contact state is gathered for
+     * the results. Process 0 writes the result files and each process its
+     * piece of solution.pvtu. The dense null-space path (the serial reference,
+     * which Path = automatic takes for small meshes), a randomly distorted mesh
      * and the tunnel lining's section forces keep a replicated serial mesh.
      */
     explicit HRProblem(dealii::ParameterHandler &prm,

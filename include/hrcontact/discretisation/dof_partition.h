@@ -18,7 +18,8 @@ namespace hrcontact
    * path's distributed linear algebra: read from the DoFHandler of a
    * distributed mesh, or mapped from p4est onto a replicated serial mesh.
    * The stiffness K, its constraints, the AMG hierarchy, the CG vectors and
-   * the cell work are distributed by it; the contact rows stay replicated.
+   * the cell work are distributed by it, and the contact rows' iteration
+   * by the owners of their nodes (ContactRowPartition).
    */
   struct DofPartition
   {

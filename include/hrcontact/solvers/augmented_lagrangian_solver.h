@@ -46,6 +46,11 @@ namespace hrcontact
    *
    * The state it iterates on is a ContactIteration (private base: the
    * solver is implemented in terms of it); result() hands it out read-only.
+   *
+   * Under MPI each process updates the rows of its owned and ghost nodes
+   * (ContactRowPartition, from the path), from the p their owners
+   * computed; norms, counts and decisions are reductions over the owned
+   * rows, and the result is gathered once at the end of a solve.
    */
   class AugmentedLagrangianSolver : private ContactIteration
   {
@@ -193,6 +198,17 @@ namespace hrcontact
     /** The outcome from the flags iterate() left. */
     void
     set_outcome();
+
+    /**
+     * The iteration computes the rows each process sees; afterwards every
+     * entry of the state and its history is gathered from the owner of its
+     * row, so that the result is complete on every process.
+     */
+    void
+    gather_state();
+
+    /** Which rows this process owns and sees: the running path's. */
+    const ContactRowPartition *ownership = nullptr;
 
     /**
      * Whether some body of held_only_by_contact has every row free

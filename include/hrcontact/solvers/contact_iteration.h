@@ -71,6 +71,13 @@ namespace hrcontact
     std::vector<std::vector<double>> p_history, mu_history, alpha_history;
     std::vector<std::vector<bool>>   released_history;
 
+    /**
+     * This process's share of the rows under MPI (ContactRowPartition): the
+     * rows of the nodes it owns, whose p it computed, and those it updated
+     * (owned and ghost). Every row on one process.
+     */
+    unsigned int rows_owned = 0, rows_seen = 0;
+
     /** The initial compliance alpha_0 the iteration started from. */
     double alpha_0 = 0;
 

@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <hrcontact/constraints/constraint_law.h>
+#include <hrcontact/discretisation/contact_row_partition.h>
 #include <hrcontact/discretisation/dof_partition.h>
 #include <hrcontact/discretisation/equilibrium_system.h>
 #include <hrcontact/discretisation/field_vector.h>
@@ -131,9 +132,21 @@ namespace hrcontact
   public:
     virtual ~NewtonStepPath() = default;
 
-    /** Solve the piece; return p = Q s - q for every Q row. */
+    /**
+     * Solve the piece; return p = Q s - q for the Q rows this process sees
+     * (row_partition().relevant(): every row on one process). Only the
+     * pieces of those rows are read.
+     */
     virtual void
     solve(const std::vector<ContactPiece> &pieces, std::vector<double> &p) = 0;
+
+    /** Which Q rows this process owns and sees (every row unless the path
+     * is distributed). */
+    const ContactRowPartition &
+    row_partition() const
+    {
+      return row_ownership;
+    }
 
     /**
      * The unilateral shorthand: released rows are springs of compliance
@@ -173,9 +186,10 @@ namespace hrcontact
                   FieldVector               &u) const = 0;
 
     /**
-     * w_n = d . u of every Q row after the last solve, needed by the
-     * displacement AL for rows without a spring. The null-space path knows u
-     * only through the rows' w_n, so it cannot (and throws InputError).
+     * w_n = d . u of the Q rows this process sees after the last solve,
+     * needed by the displacement AL for rows without a spring. The null-space
+     * path knows u only through the rows' w_n, so it cannot (and throws
+     * InputError).
      */
     virtual void
     contact_displacements(std::vector<double> &w) const;
@@ -212,6 +226,10 @@ namespace hrcontact
 
     /** Linear solver counters (zero for the dense path). */
     LinearSolverStatistics statistics;
+
+  protected:
+    /** Set by the constructor of a distributed path. */
+    ContactRowPartition row_ownership;
   };
 
   /**
@@ -271,8 +289,8 @@ namespace hrcontact
    * direct runs on several processes. Each process then holds u on its
    * relevant dofs (gathered whole only on a serial mesh under MPI, see
    * ghosted_u), recovers the stresses of its cells, and computes p for the
-   * rows of the nodes it owns; p is summed, and the multiplier updates are
-   * computed alike on every process.
+   * rows of the nodes it owns; the rows of its ghost nodes get theirs from
+   * their owners (ContactRowPartition).
    */
   class CondensedStep : public NewtonStepPath
   {
