@@ -224,6 +224,18 @@ namespace hrcontact
 
   namespace
   {
+    /** The entries of v at the given rows: a process's part of a state. */
+    template <typename T>
+    std::vector<T>
+    part_of(const std::vector<T> &v, const std::vector<unsigned int> &rows)
+    {
+      std::vector<T> part;
+      part.reserve(rows.size());
+      for (const unsigned int i : rows)
+        part.push_back(v[i]);
+      return part;
+    }
+
     /**
      * The sets (of branches, of rows in contact) an iteration has solved,
      * each process keeping the part of its own rows: a set was solved
@@ -730,14 +742,6 @@ namespace hrcontact
               law[i]->name() + "'. Take the consistent augmented Lagrangian.");
         return solve_displacement(system, unilateral, path, timer, log);
       }
-    // Each process's part of the state: the rows it sees.
-    const auto here = [&](const std::vector<double> &v) {
-      std::vector<double> part;
-      part.reserve(rows_here.size());
-      for (const unsigned int i : rows_here)
-        part.push_back(v[i]);
-      return part;
-    };
 
     // The piece each row had in the last Newton step, and the value of its
     // relation w - g there: the contact force term that solve balanced.
@@ -873,8 +877,8 @@ namespace hrcontact
                     mu_scale = std::max(mu_scale, std::abs(mu[i]));
                   }
                 mu_scale                         = ownership->max(mu_scale);
-                const std::vector<double> a_here = here(alpha);
-                const std::vector<double> m_here = here(mu);
+                const std::vector<double> a_here = part_of(alpha, rows_here);
+                const std::vector<double> m_here = part_of(mu, rows_here);
                 std::vector<bool>         same(visited.size());
                 std::vector<double>       difference(visited.size(), 0.);
                 for (unsigned int j = 0; j < visited.size(); ++j)
@@ -1015,9 +1019,8 @@ namespace hrcontact
             // A piece depends only on its branches (mu, alpha are fixed
             // here): a set seen before in this inner solve means Newton
             // cycles.
-            std::vector<unsigned int> branches_here;
-            for (const unsigned int i : rows_here)
-              branches_here.push_back(branches[i]);
+            const std::vector<unsigned int> branches_here =
+              part_of(branches, rows_here);
             if (!solved_sets.insert(branches_here))
               {
                 // In exact arithmetic the smooth pieces cannot cycle; with
@@ -1154,10 +1157,7 @@ namespace hrcontact
             if (found_floating_body(
                   [&contact](const unsigned int i) { return !contact[i]; }, k))
               break;
-            std::vector<bool> contact_here;
-            for (const unsigned int i : rows_here)
-              contact_here.push_back(contact[i]);
-            if (!solved_sets.insert(contact_here))
+            if (!solved_sets.insert(part_of(contact, rows_here)))
               {
                 cycled = true;
                 break;
