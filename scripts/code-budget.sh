@@ -38,12 +38,22 @@ if ! command -v ctags > /dev/null || ! ctags --version 2>/dev/null | grep -q Uni
   exit 2
 fi
 
+# The sources: tracked and new files (every source file outside a git
+# checkout).
+sources() {
+  if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
+    git ls-files --cached --others --exclude-standard 'source/*.cc' 'include/*.h'
+  else
+    find source include -name '*.cc' -o -name '*.h' | sort
+  fi
+}
+
 measured=$(mktemp)
 trap 'rm -f "$measured" "$measured.new"' EXIT
 
 # One line per measured item: KEY VALUE LIMIT.
 {
-  for f in $(git ls-files 'source/*.cc' 'include/*.h'); do
+  for f in $(sources); do
     n=$(wc -l < "$f")
     limit=$max_source_lines
     case $f in
@@ -55,7 +65,7 @@ trap 'rm -f "$measured" "$measured.new"' EXIT
 
   # Functions: name, first line, last line, scope. Lambdas (__anon...) are
   # part of their function; an anonymous namespace is written (anonymous).
-  git ls-files 'source/*.cc' 'include/*.h' |
+  sources |
     xargs ctags -x --kinds-c++=f --fields=+ne \
       --_xformat='%F|%N|%n|%e|%{scope}' -o - 2> /dev/null |
     awk -F'|' -v fl="$max_function_lines" -v dl="$max_declare_parameters_lines" '
@@ -78,7 +88,7 @@ trap 'rm -f "$measured" "$measured.new"' EXIT
   echo "row-loops:$orchestrator $(grep -cE 'for \(.*rows' "$orchestrator" || true) 0"
 
   # Path and solver names compared as strings outside parse_parameters.
-  for f in $(git ls-files 'source/*.cc' 'include/*.h'); do
+  for f in $(sources); do
     ranges=$(ctags -x --kinds-c++=f --fields=+ne --_xformat='%N %n %e' -o - "$f" 2> /dev/null |
       awk '$1 == "parse_parameters" { print $2, $3 }')
     n=$({ grep -nE '(==|!=) *"(null-space|condensed|automatic|cg-amg|umfpack|mumps|direct)"|(path|solver)[a-z_.]* *(==|!=) *"' "$f" || true; } |

@@ -158,8 +158,9 @@ main(int argc, char **argv)
       LinearSolverSettings            settings;
       if (cg)
         {
-          settings.solver               = "cg-amg";
-          settings.reuse_preconditioner = "true";
+          settings.solver = hrcontact::LinearSolverSettings::Choice::cg_amg;
+          settings.reuse_preconditioner =
+            hrcontact::LinearSolverSettings::Reuse::always;
         }
       if (condensed)
         path = std::make_unique<CondensedStep>(system, settings);

@@ -6,12 +6,30 @@
 
 #include <hrcontact/core/input.h>
 #include <hrcontact/discretisation/dof_partition.h>
+#include <hrcontact/discretisation/equilibrium_system.h>
 
 #include <algorithm>
 
 namespace hrcontact
 {
   using namespace dealii;
+
+  void
+  DofPartition::add_dofs_of_rows_across_nodes(const EquilibriumSystem &system)
+  {
+    if (!distributed())
+      return;
+    std::vector<types::global_dof_index> coupled;
+    for (const auto &row : system.rows)
+      if (system.dof_node(row.combination.front().first) !=
+          system.dof_node(row.combination.back().first))
+        for (const auto &[dof, c] : row.combination)
+          coupled.push_back(dof);
+    std::sort(coupled.begin(), coupled.end());
+    coupled.erase(std::unique(coupled.begin(), coupled.end()), coupled.end());
+    relevant.add_indices(coupled.begin(), coupled.end());
+    relevant.compress();
+  }
 
   std::string
   DofPartition::describe() const

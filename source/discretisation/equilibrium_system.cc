@@ -117,6 +117,24 @@ namespace hrcontact
     return sum;
   }
 
+  bool
+  EquilibriumSystem::has_contact() const
+  {
+    bool contact = false;
+    for (const unsigned int row : contact_rows)
+      contact |= rows[row].unilateral || bool(rows[row].law);
+    return contact;
+  }
+
+  std::vector<double>
+  EquilibriumSystem::contact_row_values() const
+  {
+    std::vector<double> values(contact_rows.size());
+    for (unsigned int k = 0; k < contact_rows.size(); ++k)
+      values[k] = rows[contact_rows[k]].value;
+    return values;
+  }
+
   void
   EquilibriumSystem::multiply_flexibility(const Vector<double> &s,
                                           Vector<double>       &Fs) const

@@ -4,6 +4,8 @@
 
 #include <hrcontact/discretisation/field_vector.h>
 
+#include <cmath>
+
 namespace hrcontact
 {
   using namespace dealii;
@@ -24,6 +26,15 @@ namespace hrcontact
       }
     else
       v.reinit(dof_handler.n_dofs());
+  }
+
+  bool
+  all_finite(const FieldVector &v)
+  {
+    bool finite = true;
+    for (const double x : v)
+      finite &= std::isfinite(x);
+    return Utilities::MPI::min(int(finite), v.get_mpi_communicator()) == 1;
   }
 
   template void

@@ -1243,7 +1243,7 @@ namespace hrcontact
           // such floor, and there the change may jump with beta on its way
           // down (Hertz at 24,962 dofs, diagonal: x100 at update 10, then
           // converged at update 14).
-          const bool noise = path.statistics.solver == "cg-amg" && beta_grew &&
+          const bool noise = path.statistics.iterative && beta_grew &&
                              changes == 0 && norm > 0.5 * rho * norm_previous;
           if (noise)
             roundoff_floor = std::max(roundoff_floor, norm_previous);

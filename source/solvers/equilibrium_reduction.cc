@@ -103,25 +103,6 @@ namespace hrcontact
       "A pivot of the Gaussian reduction of C^T smaller than this times the "
       "norm of its row of C counts as zero: C is then rank deficient (a "
       "mechanism) and the run stops naming the nodes the mode moves.");
-    prm.declare_entry(
-      "Path",
-      "automatic",
-      Patterns::Selection("automatic|null-space|condensed"),
-      "How every Newton step (and the linear solve without contact) is "
-      "computed, with identical results in exact arithmetic: null-space is "
-      "the paper's dense reduction to the self-equilibrated stresses s0 "
-      "(names the nodes of a mechanism; memory ~ 8 (tau n + n m + 2 m^2) "
-      "bytes); condensed eliminates the stresses cell by cell and solves the "
-      "sparse system B F^-1 B^T with UMFPACK (grows about linearly); "
-      "automatic takes null-space while its dense matrices fit in Automatic "
-      "dense limit, and condensed for a nonlinear material or a stress "
-      "constraint (whose material iteration solves dozens of Newton steps: "
-      "a masonry arch took 7 min 51 s on the dense path, 2.3 s condensed).");
-    prm.declare_entry("Automatic dense limit",
-                      "2e9",
-                      Patterns::Double(0),
-                      "Bytes of dense matrices up to which Path = automatic "
-                      "takes the null-space path.");
     prm.leave_subsection();
   }
 
@@ -129,9 +110,7 @@ namespace hrcontact
   EquilibriumReduction::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Equilibrium reduction");
-    pivot_tolerance       = prm.get_double("Pivot tolerance");
-    path                  = prm.get("Path");
-    automatic_dense_limit = prm.get_double("Automatic dense limit");
+    pivot_tolerance = prm.get_double("Pivot tolerance");
     prm.leave_subsection();
   }
 

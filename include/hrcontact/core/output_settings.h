@@ -7,7 +7,8 @@
 
 namespace hrcontact
 {
-  /** Where results go and how chatty a run is (subsection Output). */
+  /** Where results go and how chatty a run is (subsection Output; the
+   * benchmark entries there belong to the classes of diagnostics/). */
   struct OutputSettings
   {
     static void
@@ -17,13 +18,6 @@ namespace hrcontact
 
     std::string directory    = "output";
     bool        print_timing = true;
-    /** Benchmarks: time one linear elastic solve (see declare_parameters). */
-    bool time_linear_solve = false;
-    /** Benchmarks: time the plain Q1 displacement solve of the same mesh. */
-    bool time_floor = false;
-    /** Benchmarks: solve a nonlinear law once more the displacement way
-     * (DisplacementLawStiffness; see declare_parameters). */
-    bool compare_displacement_code = false;
   };
 } // namespace hrcontact
 

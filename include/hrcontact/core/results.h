@@ -5,6 +5,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <hrcontact/core/path_choice.h>
 #include <hrcontact/core/scene.h>
 #include <hrcontact/discretisation/dof_partition.h>
 #include <hrcontact/discretisation/equilibrium_system.h>
@@ -107,8 +108,8 @@ namespace hrcontact
      * selects the AMG aggregation (Linear solver/AMG aggregation =
      * automatic). */
     double largest_aspect_ratio = 1;
-    /** "null-space" or "condensed": the path the run took. */
-    std::string solution_path;
+    /** The path the run took. */
+    SolutionPath solution_path = SolutionPath::null_space;
     /** The dense reduction (null-space path only, else null). */
     const EquilibriumReduction *reduction = nullptr;
     /** Counters of the condensed path's linear solves (zero otherwise). */

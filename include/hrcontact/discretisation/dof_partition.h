@@ -13,6 +13,8 @@
 
 namespace hrcontact
 {
+  struct EquilibriumSystem;
+
   /**
    * Which displacement dofs and cells one MPI process owns in the condensed
    * path's distributed linear algebra: read from the DoFHandler of a
@@ -45,6 +47,15 @@ namespace hrcontact
     {
       return n_processes > 1;
     }
+    /**
+     * Rows over the nodes of two bodies (contact pairs): the process that
+     * owns a row's node also reads and writes the row's other dofs (w = d .
+     * u, the held row's constraint, the master rows' fill-in), so they join
+     * its relevant dofs. A surface's worth, like the rows. Nothing serially.
+     */
+    void
+    add_dofs_of_rows_across_nodes(const EquilibriumSystem &system);
+
     /** "2 processes, 1234 to 1250 dofs each", for the log. */
     std::string
     describe() const;

@@ -297,6 +297,15 @@ namespace hrcontact
     double
     row_load(const EquilibriumRow &row) const;
 
+    /** Whether some Q row is unilateral or follows a constraint law: the
+     * scene has contact, solved by the augmented Lagrangian. */
+    bool
+    has_contact() const;
+
+    /** Each Q row's value g: the w_n of every row held at its gap. */
+    std::vector<double>
+    contact_row_values() const;
+
     /** Fs = F s, cell block by cell block. */
     void
     multiply_flexibility(const dealii::Vector<double> &s,

@@ -26,6 +26,11 @@ namespace hrcontact
   void
   reinit_field(FieldVector &v, const dealii::DoFHandler<dim> &dof_handler);
 
+  /** Whether the entries of v are finite on every process (collective):
+   * a diverged solve is stopped before any result file is written. */
+  bool
+  all_finite(const FieldVector &v);
+
   /** Whether v holds every entry on this process (a serial mesh). */
   inline bool
   is_complete(const FieldVector &v)

@@ -101,6 +101,21 @@ namespace hrcontact
     void
     start_from(const ContactStart &start);
 
+    /** Start the next solve from the last solve's multipliers, penalties,
+     * reactions and force scale (a material Newton step's contact solve). */
+    void
+    start_from_result(const std::string &origin)
+    {
+      ContactStart start;
+      start.mu              = result().mu;
+      start.alpha           = result().alpha;
+      start.p               = result().p;
+      start.tolerance_scale = result().tolerance_scale;
+      start.scale_per_level = result().scale_per_level;
+      start.origin          = origin;
+      start_from(start);
+    }
+
     /** The state, history and outcome of the last solve. */
     const ContactIteration &
     result() const
@@ -145,6 +160,15 @@ namespace hrcontact
       displacement
     };
     Regularisation regularisation = Regularisation::consistent;
+
+    /** Whether a solve leaves multipliers a later one can start from: the
+     * consistent and the Macaulay AL (start_from). */
+    bool
+    carries_state() const
+    {
+      return regularisation == Regularisation::consistent ||
+             regularisation == Regularisation::macaulay;
+    }
     /**
      * Section 4.4: classical (inner Newton to eps_k, then one multiplier
      * update) or diagonal (one Newton step, then one multiplier update).

@@ -139,10 +139,6 @@ namespace hrcontact
     }
 
     double pivot_tolerance = 1e-9;
-    /** automatic, null-space or condensed (chosen by HRProblem). */
-    std::string path = "automatic";
-    /** automatic picks null-space while its dense matrices fit in this. */
-    double automatic_dense_limit = 2e9;
 
   private:
     unsigned int           n_q = 0;

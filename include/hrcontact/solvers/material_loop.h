@@ -1,0 +1,68 @@
+#ifndef hrcontact_material_loop_h
+#define hrcontact_material_loop_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <hrcontact/core/results.h>
+#include <hrcontact/discretisation/stress_constraint_field.h>
+#include <hrcontact/solvers/material_iteration.h>
+#include <hrcontact/solvers/newton_step.h>
+#include <hrcontact/solvers/stress_constraint_iteration.h>
+
+#include <functional>
+#include <memory>
+#include <ostream>
+
+namespace hrcontact
+{
+  /**
+   * The material loop of a run: one linear or contact solve at the current
+   * linearisation (`solve_once`) run as the scene's material needs. Once
+   * for a linear law; under the material Newton iteration for a nonlinear
+   * one (MaterialIteration: F_c and d_c refreshed at the last stresses);
+   * under the stress constraint's augmented Lagrangian, each inner solve a
+   * material iteration, for Material/Admissible stresses
+   * (StressConstraintIteration, the multipliers in StressConstraintField).
+   */
+  template <int dim>
+  class MaterialLoop
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /** Whether the scene needs more than one solve (a nonlinear law or a
+     * stress constraint). */
+    static bool
+    iterates(const Scene<dim> &scene);
+
+    /** Run solve_once as above; the steps, changes and the constraint's
+     * state go to results. */
+    void
+    run(EquilibriumSystem           &system,
+        NewtonStepPath              &path,
+        const std::function<void()> &solve_once,
+        Results<dim>                &results,
+        std::ostream                &log);
+
+    /** The material Newton iteration (its settings and its current step:
+     * the displacement-code comparison stops where it stops). */
+    MaterialIteration material_iteration;
+
+  private:
+    /** Under the stress constraint's augmented Lagrangian. */
+    void
+    run_constrained(EquilibriumSystem            &system,
+                    NewtonStepPath               &path,
+                    MaterialIteration::Operations operations,
+                    Results<dim>                 &results,
+                    std::ostream                 &log);
+
+    StressConstraintIteration                   constraint_iteration;
+    std::unique_ptr<StressConstraintField<dim>> constraint_field;
+  };
+} // namespace hrcontact
+
+#endif

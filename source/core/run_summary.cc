@@ -1,0 +1,107 @@
+#include <hrcontact/core/run_summary.h>
+#include <hrcontact/solvers/equilibrium_reduction.h>
+
+namespace hrcontact
+{
+  template <int dim>
+  void
+  RunSummary<dim>::fill(const Results<dim> &r,
+                        const bool          elastic_solve_timed,
+                        Summary            &summary)
+  {
+    const EquilibriumSystem &system = r.system;
+    summary                         = Summary();
+    summary.add("dimension", dim);
+    summary.add("plane_condition", r.scene.plane_condition_name());
+    summary.add("stress_element", r.spaces.stress_element_name);
+    summary.add("cells", r.triangulation().n_global_active_cells());
+    summary.add("largest_aspect_ratio", r.largest_aspect_ratio);
+    summary.add("displacement_dofs", system.n_displacement_dofs);
+    summary.add("stress_dofs", system.n_stress_dofs);
+    summary.add("free_rows", system.n_free_rows);
+    summary.add("normal_rows", system.contact_rows.size());
+    summary.add("prescribed_rows", system.prescribed_rows.size());
+    summary.add("solution_path", to_string(r.solution_path));
+    if (r.solution_path == SolutionPath::condensed)
+      add_linear_solver(r, elastic_solve_timed, summary);
+    if (r.reduction)
+      summary.add("self_equilibrated_stresses",
+                  r.reduction->n_self_equilibrated());
+    summary.add("contact_constraints",
+                r.contact ? r.contact->p.size() : std::size_t(0));
+    summary.add("iterations", r.contact ? r.contact->history.size() : 0);
+    summary.add("newton_steps", r.contact ? r.contact->total_newton_steps : 0);
+    summary.add("converged", r.converged() ? "true" : "false");
+    add_material(r, summary);
+    add_coarse_levels(r, summary);
+  }
+
+  template <int dim>
+  void
+  RunSummary<dim>::add_linear_solver(const Results<dim> &r,
+                                     const bool          elastic_solve_timed,
+                                     Summary            &summary)
+  {
+    const LinearSolverStatistics &s = r.linear_statistics;
+    summary.add("linear_solver", s.solver);
+    summary.add("linear_solves", s.solves);
+    summary.add("linear_iterations", s.iterations);
+    summary.add("preconditioner_setups", s.preconditioner_setups);
+    if (s.iterative)
+      {
+        summary.add("linear_tolerance", s.tolerance);
+        summary.add("amg_aggregation", s.aggregation);
+        summary.add("linear_tolerance_tightenings", s.tightenings);
+      }
+    summary.add("linear_setup_seconds", s.setup_seconds);
+    summary.add("linear_solve_seconds", s.solve_seconds);
+    if (elastic_solve_timed)
+      summary.add("linear_elastic_solve_seconds", r.linear_elastic_seconds);
+  }
+
+  template <int dim>
+  void
+  RunSummary<dim>::add_material(const Results<dim> &r, Summary &summary)
+  {
+    if (!r.scene.all_linear() || r.scene.stress_constraint)
+      {
+        summary.add("material_newton_steps", r.material_steps);
+        summary.add("material_stress_change",
+                    r.material_changes.empty() ? 0. :
+                                                 r.material_changes.back());
+      }
+    if (!r.scene.stress_constraint)
+      return;
+    summary.add("stress_constraint", r.scene.stress_constraint->name());
+    summary.add("stress_constraint_updates", r.constraint_residuals.size());
+    summary.add("stress_constraint_residual",
+                r.constraint_residuals.empty() ? 0. :
+                                                 r.constraint_residuals.back());
+    summary.add(dim == 2 ? "cracked_area_fraction" : "cracked_volume_fraction",
+                r.cracked_fraction);
+    summary.add("largest_fracture_strain", r.largest_fracture_strain);
+  }
+
+  template <int dim>
+  void
+  RunSummary<dim>::add_coarse_levels(const Results<dim> &r, Summary &summary)
+  {
+    if (r.coarse_levels.empty())
+      return;
+    unsigned int newton = 0, solves = 0;
+    double       seconds = 0;
+    for (const auto &level : r.coarse_levels)
+      {
+        newton += level.newton_steps;
+        solves += level.linear_solves;
+        seconds += level.seconds;
+      }
+    summary.add("nested_coarse_levels", r.coarse_levels.size());
+    summary.add("coarse_level_newton_steps", newton);
+    summary.add("coarse_level_linear_solves", solves);
+    summary.add("coarse_level_seconds", seconds);
+  }
+
+  template class RunSummary<2>;
+  template class RunSummary<3>;
+} // namespace hrcontact

@@ -1,0 +1,164 @@
+#include <hrcontact/discretisation/hr_assembler.h>
+#include <hrcontact/material/linear_elasticity.h>
+#include <hrcontact/solvers/material_loop.h>
+
+#include <algorithm>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  MaterialLoop<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    MaterialIteration::declare_parameters(prm);
+    StressConstraintIteration::declare_parameters(prm);
+  }
+
+  template <int dim>
+  void
+  MaterialLoop<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    material_iteration.parse_parameters(prm);
+    constraint_iteration.parse_parameters(prm);
+  }
+
+  template <int dim>
+  bool
+  MaterialLoop<dim>::iterates(const Scene<dim> &scene)
+  {
+    return !scene.all_linear() || scene.stress_constraint != nullptr;
+  }
+
+  template <int dim>
+  void
+  MaterialLoop<dim>::run(EquilibriumSystem           &system,
+                         NewtonStepPath              &path,
+                         const std::function<void()> &solve_once,
+                         Results<dim>                &r,
+                         std::ostream                &log)
+  {
+    r.material_steps = 0;
+    r.material_changes.clear();
+    r.constraint_residuals.clear();
+    r.constraint_inner_steps.clear();
+    r.constraint_field = nullptr;
+    if (!iterates(r.scene))
+      {
+        solve_once();
+        return;
+      }
+    // Newton on the complementary energy: F_c and d_c refreshed at the last
+    // stresses (on a distributed mesh each process those of its own and
+    // ghost cells, all the cells it assembles).
+    MaterialIteration::Operations operations;
+    operations.solve    = solve_once;
+    operations.stresses = [&](FieldVector &s) {
+      reinit_field(s, r.spaces.stress_unknowns());
+      path.stresses(s);
+    };
+    if (r.scene.stress_constraint)
+      {
+        run_constrained(system, path, operations, r, log);
+        return;
+      }
+    HRAssembler<dim> assembler(r.scene, r.spaces);
+    operations.linearise_at = [&](const FieldVector &s) {
+      assembler.refresh_flexibility(system, s);
+      path.flexibility_changed();
+    };
+    material_iteration.solve(operations, log);
+    r.material_steps += material_iteration.n_steps();
+    r.material_changes.insert(r.material_changes.end(),
+                              material_iteration.change_history().begin(),
+                              material_iteration.change_history().end());
+    log << "  material iteration: " << r.material_steps << " Newton steps"
+        << std::endl;
+  }
+
+  template <int dim>
+  void
+  MaterialLoop<dim>::run_constrained(EquilibriumSystem            &system,
+                                     NewtonStepPath               &path,
+                                     MaterialIteration::Operations operations,
+                                     Results<dim>                 &r,
+                                     std::ostream                 &log)
+  {
+    using Points     = typename StressConstraintField<dim>::Points;
+    constraint_field = std::make_unique<StressConstraintField<dim>>(
+      *r.scene.stress_constraint,
+      r.spaces,
+      constraint_iteration.constraint_points == "vertices" ?
+        Points::vertices :
+      constraint_iteration.constraint_points == "Gauss points" ?
+        Points::gauss_points :
+        Points::cell_centres);
+    HRAssembler<dim> assembler(r.scene, r.spaces);
+    assembler.constraint_field = constraint_field.get();
+    operations.linearise_at    = [&](const FieldVector &s) {
+      assembler.refresh_flexibility(system, s);
+      path.flexibility_changed();
+    };
+    // The semismooth constraint term can make full Newton steps cycle: an
+    // exact line search on the complementary energy damps them.
+    operations.energy_slope = [&](const FieldVector &s0,
+                                  const FieldVector &delta,
+                                  const double       theta,
+                                  double            *curvature) {
+      return assembler.energy_slope(s0, delta, theta, curvature);
+    };
+    // The stress constraint's augmented Lagrangian around it, the inner
+    // tolerance following the residual (Step 2), never below the material
+    // iteration's own.
+    const double material_tolerance = material_iteration.relative_tolerance;
+    StressConstraintIteration::Operations c;
+    c.solve_material = [&](const double eps) {
+      material_iteration.relative_tolerance = std::max(eps, material_tolerance);
+      material_iteration.solve(operations, log);
+      r.material_steps += material_iteration.n_steps();
+      r.material_changes.insert(r.material_changes.end(),
+                                material_iteration.change_history().begin(),
+                                material_iteration.change_history().end());
+      material_iteration.relative_tolerance = material_tolerance;
+      const auto &changes = material_iteration.change_history();
+      // A stop at the path's round-off floor counts as converged.
+      return std::make_pair(material_iteration.n_steps(),
+                            (changes.empty() ||
+                             material_iteration.stopped_at_roundoff()) ?
+                              0. :
+                              changes.back());
+    };
+    c.stresses           = operations.stresses;
+    c.update_multipliers = [&](const FieldVector &s) {
+      return constraint_field->update_multipliers(s);
+    };
+    c.set_penalty = [&](const double alpha) {
+      constraint_field->alpha = alpha;
+    };
+    c.violation = [&](const FieldVector &s) {
+      return constraint_field->largest_violation(s);
+    };
+    c.linearise_at                       = operations.linearise_at;
+    const LinearElasticity<dim> *elastic = r.scene.material->elastic_part();
+    log << "  stress constraint '" << r.scene.stress_constraint->name()
+        << "' at " << constraint_field->quadrature().size()
+        << " point(s) per cell (" << constraint_iteration.constraint_points
+        << "), consistent augmented Lagrangian" << std::endl;
+    constraint_iteration.solve(c,
+                               elastic ? 1. / elastic->youngs_modulus() : 1.,
+                               log);
+    r.constraint_residuals    = constraint_iteration.residual_history();
+    r.constraint_inner_steps  = constraint_iteration.inner_step_history();
+    r.cracked_fraction        = constraint_field->cracked_fraction();
+    r.largest_fracture_strain = constraint_field->largest_opening();
+    r.constraint_field        = constraint_field.get();
+    log << "  stress constraint: " << r.constraint_residuals.size()
+        << " multiplier updates, " << r.material_steps
+        << " material Newton steps, cracked fraction " << r.cracked_fraction
+        << std::endl;
+  }
+
+  template class MaterialLoop<2>;
+  template class MaterialLoop<3>;
+} // namespace hrcontact
