@@ -101,15 +101,15 @@ namespace hrcontact
     mesh.describe(scene, spaces, partition, log);
     {
       TimerOutput::Scope t(timer, "assembly");
-      // Above the dense limit with every dof free, the path is condensed
-      // whatever the rows, and the free rows of unconstrained nodes can stay
-      // implicit; a distributed mesh is always lean.
+      // Where the path is condensed whatever the rows, the free rows of
+      // unconstrained nodes can stay implicit; a distributed mesh is always
+      // lean.
       const bool lean_rows =
         mesh.distributed() ||
         (path_choice.setting != PathChoice::Setting::null_space &&
-         !path_choice.dense_fits(PathChoice::dense_reduction_bytes(
+         !path_choice.dense_fits_every_dof_free(
            spaces.dof_handler_displacement.n_dofs(),
-           spaces.stress_unknowns().n_dofs())));
+           spaces.stress_unknowns().n_dofs()));
       HRAssembler<dim>(scene, spaces).classify_rows(system, lean_rows);
       partition.add_dofs_of_rows_across_nodes(system);
     }

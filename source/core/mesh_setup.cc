@@ -45,9 +45,9 @@ namespace hrcontact
     // (the mesh is cheap to build again).
     if (distributed_mesh && path_choice.setting == Setting::automatic &&
         !needs.material_iteration &&
-        path_choice.dense_fits(PathChoice::dense_reduction_bytes(
+        path_choice.dense_fits_every_dof_free(
           spaces.dof_handler_displacement.n_dofs(),
-          spaces.stress_unknowns().n_dofs())))
+          spaces.stress_unknowns().n_dofs()))
       {
         distributed_mesh  = false;
         replicated_reason = "small enough for the null-space path";

@@ -50,11 +50,12 @@ namespace hrcontact
   PathChoice::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Equilibrium reduction");
-    const std::string path = prm.get("Path");
-    setting                = path == "null-space" ? Setting::null_space :
-                             path == "condensed"  ? Setting::condensed :
-                                                    Setting::automatic;
-    automatic_dense_limit  = prm.get_double("Automatic dense limit");
+    setting               = get_selection<Setting>(prm,
+                                     "Path",
+                                     {{"automatic", Setting::automatic},
+                                                    {"null-space", Setting::null_space},
+                                                    {"condensed", Setting::condensed}});
+    automatic_dense_limit = prm.get_double("Automatic dense limit");
     prm.leave_subsection();
   }
 
@@ -71,6 +72,14 @@ namespace hrcontact
   PathChoice::dense_fits(const double bytes) const
   {
     return bytes <= automatic_dense_limit;
+  }
+
+  bool
+  PathChoice::dense_fits_every_dof_free(const double n_displacement_dofs,
+                                        const double n_stress_unknowns) const
+  {
+    return dense_fits(
+      dense_reduction_bytes(n_displacement_dofs, n_stress_unknowns));
   }
 
   SolutionPath

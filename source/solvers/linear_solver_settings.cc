@@ -1,3 +1,4 @@
+#include <hrcontact/core/input.h>
 #include <hrcontact/solvers/linear_solver_settings.h>
 
 #include <cmath>
@@ -153,28 +154,33 @@ namespace hrcontact
   LinearSolverSettings::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    const std::string s   = prm.get("Solver");
-    solver                = s == "direct" ? Choice::direct :
-                            s == "cg-amg" ? Choice::cg_amg :
-                                            Choice::automatic;
-    direct_limit_2d       = prm.get_double("Direct solver limit 2D");
-    direct_limit_3d       = prm.get_double("Direct solver limit 3D");
-    tolerance             = prm.get_double("Tolerance");
-    max_iterations        = prm.get_integer("Maximum iterations");
-    const std::string r   = prm.get("Reuse preconditioner");
-    reuse_preconditioner  = r == "true"  ? Reuse::always :
-                            r == "false" ? Reuse::never :
-                                           Reuse::automatic;
+    solver          = get_selection<Choice>(prm,
+                                   "Solver",
+                                   {{"automatic", Choice::automatic},
+                                             {"direct", Choice::direct},
+                                             {"cg-amg", Choice::cg_amg}});
+    direct_limit_2d = prm.get_double("Direct solver limit 2D");
+    direct_limit_3d = prm.get_double("Direct solver limit 3D");
+    tolerance       = prm.get_double("Tolerance");
+    max_iterations  = prm.get_integer("Maximum iterations");
+    reuse_preconditioner =
+      get_selection<Reuse>(prm,
+                           "Reuse preconditioner",
+                           {{"automatic", Reuse::automatic},
+                            {"true", Reuse::always},
+                            {"false", Reuse::never}});
     warm_start            = prm.get_bool("Warm start");
     warm_start_reduction  = prm.get_double("Warm start reduction");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
-    const std::string a   = prm.get("AMG aggregation");
-    aggregation           = a == "matrix"      ? Aggregation::matrix :
-                            a == "coordinates" ? Aggregation::coordinates :
-                                                 Aggregation::automatic;
-    coordinate_threshold  = prm.get_double("AMG coordinate threshold");
-    aspect_ratio_limit    = prm.get_double("AMG aspect ratio limit");
+    aggregation =
+      get_selection<Aggregation>(prm,
+                                 "AMG aggregation",
+                                 {{"automatic", Aggregation::automatic},
+                                  {"matrix", Aggregation::matrix},
+                                  {"coordinates", Aggregation::coordinates}});
+    coordinate_threshold = prm.get_double("AMG coordinate threshold");
+    aspect_ratio_limit   = prm.get_double("AMG aspect ratio limit");
     prm.leave_subsection();
   }
 

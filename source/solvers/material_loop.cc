@@ -68,13 +68,23 @@ namespace hrcontact
       assembler.refresh_flexibility(system, s);
       path.flexibility_changed();
     };
+    solve_material_iteration(operations, r, log);
+    log << "  material iteration: " << r.material_steps << " Newton steps"
+        << std::endl;
+  }
+
+  template <int dim>
+  void
+  MaterialLoop<dim>::solve_material_iteration(
+    const MaterialIteration::Operations &operations,
+    Results<dim>                        &r,
+    std::ostream                        &log)
+  {
     material_iteration.solve(operations, log);
     r.material_steps += material_iteration.n_steps();
     r.material_changes.insert(r.material_changes.end(),
                               material_iteration.change_history().begin(),
                               material_iteration.change_history().end());
-    log << "  material iteration: " << r.material_steps << " Newton steps"
-        << std::endl;
   }
 
   template <int dim>
@@ -115,11 +125,7 @@ namespace hrcontact
     StressConstraintIteration::Operations c;
     c.solve_material = [&](const double eps) {
       material_iteration.relative_tolerance = std::max(eps, material_tolerance);
-      material_iteration.solve(operations, log);
-      r.material_steps += material_iteration.n_steps();
-      r.material_changes.insert(r.material_changes.end(),
-                                material_iteration.change_history().begin(),
-                                material_iteration.change_history().end());
+      solve_material_iteration(operations, r, log);
       material_iteration.relative_tolerance = material_tolerance;
       const auto &changes = material_iteration.change_history();
       // A stop at the path's round-off floor counts as converged.

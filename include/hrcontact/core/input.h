@@ -2,12 +2,14 @@
 #define hrcontact_input_h
 
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
 #include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hrcontact
@@ -33,6 +35,26 @@ namespace hrcontact
   public:
     using std::runtime_error::runtime_error;
   };
+
+  /**
+   * The value of a Patterns::Selection entry of the current subsection as
+   * an enum, so that names are compared here, once, and nowhere after
+   * parsing. `names` pairs every option of the pattern with its value; an
+   * option missing from it (the pattern and the list out of step) is an
+   * error naming the entry.
+   */
+  template <typename Enum>
+  Enum
+  get_selection(dealii::ParameterHandler                        &prm,
+                const std::string                               &entry,
+                const std::vector<std::pair<std::string, Enum>> &names)
+  {
+    const std::string value = prm.get(entry);
+    for (const auto &[name, e] : names)
+      if (name == value)
+        return e;
+    throw InputError(entry + " = " + value + ": not a known option.");
+  }
 
   /**
    * Named constants usable in every expression of a parameter file, e.g.

@@ -71,6 +71,16 @@ namespace hrcontact
     bool
     dense_fits(const double bytes) const;
 
+    /**
+     * Whether the dense reduction fits with every displacement dof a free
+     * row. Its bytes fall as the free rows grow, so this bounds those of
+     * any classification from below: where it does not fit, the path is
+     * condensed whatever the rows.
+     */
+    bool
+    dense_fits_every_dof_free(const double n_displacement_dofs,
+                              const double n_stress_unknowns) const;
+
     /** The path for a system whose dense reduction takes dense_bytes; logs
      * it, and refuses a forced null-space path that cannot serve. */
     SolutionPath

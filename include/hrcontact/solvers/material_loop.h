@@ -52,6 +52,13 @@ namespace hrcontact
     MaterialIteration material_iteration;
 
   private:
+    /** One material Newton iteration; its steps and changes added to
+     * results (several per run under a stress constraint). */
+    void
+    solve_material_iteration(const MaterialIteration::Operations &operations,
+                             Results<dim>                        &results,
+                             std::ostream                        &log);
+
     /** Under the stress constraint's augmented Lagrangian. */
     void
     run_constrained(EquilibriumSystem            &system,
