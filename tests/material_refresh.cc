@@ -17,8 +17,9 @@
 #include <hrcontact/discretisation/hr_assembler.h>
 #include <hrcontact/discretisation/mixed_spaces.h>
 #include <hrcontact/material/material_law.h>
+#include <hrcontact/solvers/condensed/condensed_step.h>
 #include <hrcontact/solvers/equilibrium_reduction.h>
-#include <hrcontact/solvers/newton_step.h>
+#include <hrcontact/solvers/null_space_step.h>
 
 #include "tests.h"
 

@@ -18,8 +18,9 @@
 
 #include <hrcontact/constraints/constraint_law.h>
 #include <hrcontact/solvers/augmented_lagrangian_solver.h>
+#include <hrcontact/solvers/condensed/condensed_step.h>
 #include <hrcontact/solvers/equilibrium_reduction.h>
-#include <hrcontact/solvers/newton_step.h>
+#include <hrcontact/solvers/null_space_step.h>
 
 #include <cmath>
 #include <iomanip>

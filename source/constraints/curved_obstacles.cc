@@ -4,7 +4,7 @@
 
 #include <hrcontact/constraints/curved_obstacles.h>
 #include <hrcontact/discretisation/hr_assembler.h>
-#include <hrcontact/solvers/newton_step.h>
+#include <hrcontact/solvers/newton_step_path.h>
 
 #include <cmath>
 

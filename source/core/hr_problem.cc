@@ -2,8 +2,10 @@
 #include <hrcontact/core/run.h>
 #include <hrcontact/core/run_summary.h>
 #include <hrcontact/discretisation/hr_assembler.h>
+#include <hrcontact/solvers/condensed/condensed_step.h>
 #include <hrcontact/solvers/contact_solve.h>
 #include <hrcontact/solvers/field_recovery.h>
+#include <hrcontact/solvers/null_space_step.h>
 
 #include <filesystem>
 

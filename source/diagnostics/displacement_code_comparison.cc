@@ -3,6 +3,7 @@
 #include <hrcontact/core/input.h>
 #include <hrcontact/diagnostics/displacement_code_comparison.h>
 #include <hrcontact/discretisation/displacement_law_stiffness.h>
+#include <hrcontact/solvers/condensed/condensed_step.h>
 
 #include <iomanip>
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <hrcontact/diagnostics/elastic_timing.h>
+#include <hrcontact/solvers/condensed/condensed_step.h>
 
 namespace hrcontact
 {

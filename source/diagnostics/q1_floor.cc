@@ -2,6 +2,7 @@
 
 #include <hrcontact/diagnostics/q1_floor.h>
 #include <hrcontact/discretisation/displacement_stiffness.h>
+#include <hrcontact/solvers/condensed/condensed_step.h>
 
 namespace hrcontact
 {

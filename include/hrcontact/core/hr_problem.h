@@ -21,7 +21,7 @@
 #include <hrcontact/solvers/equilibrium_reduction.h>
 #include <hrcontact/solvers/material_loop.h>
 #include <hrcontact/solvers/nested_level_runner.h>
-#include <hrcontact/solvers/newton_step.h>
+#include <hrcontact/solvers/newton_step_path.h>
 
 #include <memory>
 #include <ostream>

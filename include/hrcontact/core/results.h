@@ -13,7 +13,7 @@
 #include <hrcontact/discretisation/mixed_spaces.h>
 #include <hrcontact/postprocess/summary.h>
 #include <hrcontact/solvers/contact_iteration.h>
-#include <hrcontact/solvers/newton_step.h>
+#include <hrcontact/solvers/linear_solver_settings.h>
 
 #include <array>
 #include <string>

@@ -4,8 +4,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <hrcontact/core/results.h>
+#include <hrcontact/solvers/linear_solver_settings.h>
 #include <hrcontact/solvers/material_iteration.h>
-#include <hrcontact/solvers/newton_step.h>
 
 #include <ostream>
 

@@ -4,7 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <hrcontact/core/results.h>
-#include <hrcontact/solvers/newton_step.h>
+#include <hrcontact/solvers/linear_solver_settings.h>
 
 #include <ostream>
 

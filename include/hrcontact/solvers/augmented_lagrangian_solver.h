@@ -11,7 +11,7 @@
 #include <hrcontact/discretisation/equilibrium_system.h>
 #include <hrcontact/solvers/contact_iteration.h>
 #include <hrcontact/solvers/nested_iteration.h>
-#include <hrcontact/solvers/newton_step.h>
+#include <hrcontact/solvers/newton_step_path.h>
 #include <hrcontact/solvers/row_relinearisation.h>
 
 #include <functional>

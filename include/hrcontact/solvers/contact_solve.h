@@ -6,7 +6,7 @@
 #include <hrcontact/core/results.h>
 #include <hrcontact/solvers/augmented_lagrangian_solver.h>
 #include <hrcontact/solvers/material_loop.h>
-#include <hrcontact/solvers/newton_step.h>
+#include <hrcontact/solvers/newton_step_path.h>
 
 #include <ostream>
 #include <vector>

@@ -2,7 +2,7 @@
 #define hrcontact_field_recovery_h
 
 #include <hrcontact/core/results.h>
-#include <hrcontact/solvers/newton_step.h>
+#include <hrcontact/solvers/newton_step_path.h>
 
 namespace hrcontact
 {

@@ -6,7 +6,7 @@
 #include <hrcontact/core/results.h>
 #include <hrcontact/discretisation/stress_constraint_field.h>
 #include <hrcontact/solvers/material_iteration.h>
-#include <hrcontact/solvers/newton_step.h>
+#include <hrcontact/solvers/newton_step_path.h>
 #include <hrcontact/solvers/stress_constraint_iteration.h>
 
 #include <functional>
