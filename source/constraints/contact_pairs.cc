@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <hrcontact/constraints/contact_pairs.h>
+#include <hrcontact/constraints/mortar.h>
 #include <hrcontact/constraints/two_sided_stops.h>
 
 #include <algorithm>
@@ -17,314 +18,6 @@ namespace hrcontact
 
   namespace
   {
-    /**
-     * The bilinear (2D: linear) shape functions of a face at the reference
-     * point xi, in deal.II's vertex order, and their derivatives.
-     */
-    template <int dim>
-    void
-    face_shape(const std::array<double, dim - 1>        &xi,
-               std::vector<double>                      &N,
-               std::vector<std::array<double, dim - 1>> &dN)
-    {
-      if constexpr (dim == 2)
-        {
-          N  = {1 - xi[0], xi[0]};
-          dN = {{{-1.}}, {{1.}}};
-        }
-      else
-        {
-          const double a = xi[0], b = xi[1];
-          N  = {(1 - a) * (1 - b), a * (1 - b), (1 - a) * b, a * b};
-          dN = {{{-(1 - b), -(1 - a)}},
-                {{(1 - b), -a}},
-                {{-b, (1 - a)}},
-                {{b, a}}};
-        }
-    }
-
-    /**
-     * The closest point of a face to x: Gauss-Newton on the face's
-     * parametrisation (one step for a straight segment, a few for a
-     * bilinear quadrilateral), unclamped. Returns the reference point.
-     */
-    template <int dim>
-    std::array<double, dim - 1>
-    closest_point(const std::vector<Point<dim>> &vertices, const Point<dim> &x)
-    {
-      std::array<double, dim - 1>              xi;
-      std::vector<double>                      N;
-      std::vector<std::array<double, dim - 1>> dN;
-      xi.fill(0.5);
-      for (unsigned int it = 0; it < 20; ++it)
-        {
-          face_shape<dim>(xi, N, dN);
-          Point<dim>                          y;
-          std::array<Tensor<1, dim>, dim - 1> t;
-          for (unsigned int v = 0; v < vertices.size(); ++v)
-            {
-              y += N[v] * vertices[v];
-              for (unsigned int a = 0; a < dim - 1; ++a)
-                t[a] += dN[v][a] * vertices[v];
-            }
-          const Tensor<1, dim> r = x - y;
-          // The normal equations (t_a . t_b) dxi_b = t_a . r.
-          double step[2] = {0, 0};
-          if constexpr (dim == 2)
-            step[0] = (t[0] * r) / (t[0] * t[0]);
-          else
-            {
-              const double g11 = t[0] * t[0], g12 = t[0] * t[1],
-                           g22 = t[1] * t[1];
-              const double b1 = t[0] * r, b2 = t[1] * r;
-              const double det = g11 * g22 - g12 * g12;
-              step[0]          = (g22 * b1 - g12 * b2) / det;
-              step[1]          = (g11 * b2 - g12 * b1) / det;
-            }
-          double change = 0;
-          for (unsigned int a = 0; a < dim - 1; ++a)
-            {
-              xi[a] += step[a];
-              change = std::max(change, std::abs(step[a]));
-            }
-          if (change < 1e-14)
-            break;
-        }
-      return xi;
-    }
-
-    /**
-     * The mortar sums of one slave node (dual basis psi_s, the
-     * integrals over the parts of its faces that master faces cover):
-     * D = int psi_s, M_m = int psi_s N_m, G = int psi_s g, and how much of
-     * its faces is covered.
-     */
-    struct MortarSums
-    {
-      double                         D = 0, G = 0, covered = 0, length = 0;
-      std::map<unsigned int, double> M;
-    };
-
-    /**
-     * Segment to segment with dual Lagrange multipliers (Wohlmuth): each
-     * slave face is cut where the master faces facing it (within reach)
-     * begin and end, projected along the slave face's normal; on each
-     * piece the products of the slave's dual shape functions psi_1 = 2 -
-     * 3 xi, psi_2 = 3 xi - 1 with the master's linear ones are integrated
-     * exactly (3 Gauss points; both are linear in xi on straight faces).
-     */
-    template <int dim>
-    std::map<unsigned int, MortarSums>
-    mortar_sums(const std::vector<BoundaryFace<dim>>         &faces,
-                const types::boundary_id                      slave,
-                const std::vector<const BoundaryFace<dim> *> &masters,
-                const double                                  reach)
-    {
-      std::map<unsigned int, MortarSums> sums;
-      if constexpr (dim == 2)
-        {
-          const QGauss<1> gauss(3);
-          for (const auto &face : faces)
-            {
-              if (face.boundary_id != slave)
-                continue;
-              const Point<2>    &x0 = face.points[0];
-              const Tensor<1, 2> t  = face.points[1] - x0;
-              const double       L2 = t * t;
-              for (unsigned int a = 0; a < 2; ++a)
-                sums[face.nodes[a]].length += std::sqrt(L2);
-              for (const BoundaryFace<dim> *m : masters)
-                {
-                  if (!(m->normal * face.normal < 0))
-                    continue;
-                  const Point<2>    &y0 = m->points[0];
-                  const Tensor<1, 2> s  = m->points[1] - y0;
-                  if (std::abs(s * t) < 1e-12 * std::sqrt(L2 * (s * s)))
-                    continue;
-                  const double xa = (y0 - x0) * t / L2,
-                               xb = (m->points[1] - x0) * t / L2;
-                  const double lo = std::max(0., std::min(xa, xb)),
-                               hi = std::min(1., std::max(xa, xb));
-                  if (hi - lo <= 1e-12)
-                    continue;
-                  // Within reach at the middle of the piece.
-                  {
-                    const Point<2> x   = x0 + 0.5 * (lo + hi) * t;
-                    const double   eta = ((x - y0) * t) / (s * t);
-                    if (x.distance(y0 + eta * s) > reach)
-                      continue;
-                  }
-                  for (unsigned int q = 0; q < gauss.size(); ++q)
-                    {
-                      const double xi = lo + (hi - lo) * gauss.point(q)[0];
-                      const double w =
-                        gauss.weight(q) * (hi - lo) * std::sqrt(L2);
-                      const Point<2> x      = x0 + xi * t;
-                      const double   eta    = ((x - y0) * t) / (s * t);
-                      const Point<2> y      = y0 + eta * s;
-                      const double   g      = (y - x) * face.normal;
-                      const double   psi[2] = {2 - 3 * xi, 3 * xi - 1};
-                      const double   N[2]   = {1 - eta, eta};
-                      for (unsigned int a = 0; a < 2; ++a)
-                        {
-                          MortarSums &S = sums[face.nodes[a]];
-                          S.D += w * psi[a];
-                          S.G += w * psi[a] * g;
-                          for (unsigned int b = 0; b < 2; ++b)
-                            S.M[m->nodes[b]] += w * psi[a] * N[b];
-                        }
-                    }
-                  for (unsigned int a = 0; a < 2; ++a)
-                    sums[face.nodes[a]].covered += (hi - lo) * std::sqrt(L2);
-                }
-            }
-        }
-      else
-        {
-          // 3D: each slave face and each master face facing it are
-          // projected onto the slave face's plane, the two quadrilaterals
-          // clipped (Sutherland-Hodgman: both convex), the overlap cut into
-          // triangles and integrated with a rule exact to degree 5 (psi_s
-          // N_m is of degree 4 on parallel planar faces). The dual basis is
-          // the tensor product of the 1D one, biorthogonal on
-          // parallelograms (the slave faces of a box's side); on distorted
-          // faces only approximately.
-          const QGaussSimplex<2> rule(3);
-          using P2 = std::array<double, 2>;
-          for (const auto &face : faces)
-            {
-              if (face.boundary_id != slave)
-                continue;
-              const Tensor<1, dim> n = face.normal;
-              Point<dim>           centre;
-              for (const auto &x : face.points)
-                centre += x / 4.;
-              Tensor<1, dim> t1 = face.points[1] - face.points[0];
-              t1 -= (t1 * n) * n;
-              t1 /= t1.norm();
-              const Tensor<1, dim> t2    = cross_product_3d(n, t1);
-              auto                 plane = [&](const Point<dim> &x) -> P2 {
-                return {{(x - centre) * t1, (x - centre) * t2}};
-              };
-              // deal.II's vertex order 0, 1, 3, 2 goes around the face;
-              // counterclockwise seen from the normal's side.
-              auto polygon = [&](const std::vector<Point<dim>> &v) {
-                std::vector<P2> poly = {plane(v[0]),
-                                        plane(v[1]),
-                                        plane(v[3]),
-                                        plane(v[2])};
-                double          area = 0;
-                for (unsigned int i = 0; i < 4; ++i)
-                  area += poly[i][0] * poly[(i + 1) % 4][1] -
-                          poly[(i + 1) % 4][0] * poly[i][1];
-                if (area < 0)
-                  std::reverse(poly.begin(), poly.end());
-                return poly;
-              };
-              const std::vector<P2> slave_poly = polygon(face.points);
-              double                slave_area = 0;
-              for (unsigned int i = 0; i < 4; ++i)
-                slave_area +=
-                  0.5 * (slave_poly[i][0] * slave_poly[(i + 1) % 4][1] -
-                         slave_poly[(i + 1) % 4][0] * slave_poly[i][1]);
-              for (const unsigned int node : face.nodes)
-                sums[node].length += slave_area;
-              for (const BoundaryFace<dim> *m : masters)
-                {
-                  if (!(m->normal * n < 0))
-                    continue;
-                  Point<dim> m_centre;
-                  for (const auto &y : m->points)
-                    m_centre += y / 4.;
-                  if (std::abs((m_centre - centre) * n) > reach)
-                    continue;
-                  // Clip the master polygon by each edge of the slave's.
-                  std::vector<P2> clipped = polygon(m->points);
-                  for (unsigned int e = 0; e < 4 && !clipped.empty(); ++e)
-                    {
-                      const P2 a = slave_poly[e], b = slave_poly[(e + 1) % 4];
-                      auto     inside = [&](const P2 &p) {
-                        return (b[0] - a[0]) * (p[1] - a[1]) -
-                                 (b[1] - a[1]) * (p[0] - a[0]) >=
-                               -1e-14 * slave_area;
-                      };
-                      std::vector<P2> out;
-                      for (unsigned int i = 0; i < clipped.size(); ++i)
-                        {
-                          const P2 &p   = clipped[i],
-                                   &q   = clipped[(i + 1) % clipped.size()];
-                          const bool ip = inside(p), iq = inside(q);
-                          if (ip)
-                            out.push_back(p);
-                          if (ip != iq)
-                            {
-                              const double dp = (b[0] - a[0]) * (p[1] - a[1]) -
-                                                (b[1] - a[1]) * (p[0] - a[0]);
-                              const double dq = (b[0] - a[0]) * (q[1] - a[1]) -
-                                                (b[1] - a[1]) * (q[0] - a[0]);
-                              const double t = dp / (dp - dq);
-                              out.push_back({{p[0] + t * (q[0] - p[0]),
-                                              p[1] + t * (q[1] - p[1])}});
-                            }
-                        }
-                      clipped = std::move(out);
-                    }
-                  if (clipped.size() < 3)
-                    continue;
-                  double covered = 0;
-                  for (unsigned int k = 1; k + 1 < clipped.size(); ++k)
-                    {
-                      const P2 &A = clipped[0], &B = clipped[k],
-                               &C       = clipped[k + 1];
-                      const double area = 0.5 * ((B[0] - A[0]) * (C[1] - A[1]) -
-                                                 (C[0] - A[0]) * (B[1] - A[1]));
-                      if (!(area > 1e-14 * slave_area))
-                        continue;
-                      covered += area;
-                      for (unsigned int q = 0; q < rule.size(); ++q)
-                        {
-                          const double u     = rule.point(q)[0],
-                                       v     = rule.point(q)[1];
-                          const double     w = rule.weight(q) * 2 * area;
-                          const Point<dim> X =
-                            centre +
-                            (A[0] + u * (B[0] - A[0]) + v * (C[0] - A[0])) *
-                              t1 +
-                            (A[1] + u * (B[1] - A[1]) + v * (C[1] - A[1])) * t2;
-                          const auto xs = closest_point<dim>(face.points, X);
-                          const auto xm = closest_point<dim>(m->points, X);
-                          std::vector<double>                      Ns, Nm;
-                          std::vector<std::array<double, dim - 1>> dN;
-                          face_shape<dim>(xs, Ns, dN);
-                          face_shape<dim>(xm, Nm, dN);
-                          Point<dim> x, y;
-                          for (unsigned int v = 0; v < 4; ++v)
-                            {
-                              x += Ns[v] * face.points[v];
-                              y += Nm[v] * m->points[v];
-                            }
-                          const double g     = (y - x) * n;
-                          const double d0[2] = {2 - 3 * xs[0], 3 * xs[0] - 1},
-                                       d1[2] = {2 - 3 * xs[1], 3 * xs[1] - 1};
-                          for (unsigned int a = 0; a < 4; ++a)
-                            {
-                              const double psi = d0[a % 2] * d1[a / 2];
-                              MortarSums  &S   = sums[face.nodes[a]];
-                              S.D += w * psi;
-                              S.G += w * psi * g;
-                              for (unsigned int b = 0; b < 4; ++b)
-                                S.M[m->nodes[b]] += w * psi * Nm[b];
-                            }
-                        }
-                    }
-                  for (const unsigned int node : face.nodes)
-                    sums[node].covered += covered;
-                }
-            }
-        }
-      return sums;
-    }
-
     /** The bodies overlap at the start: the error, naming the node. */
     InputError
     overlap_error(const std::string &where,
@@ -338,6 +31,40 @@ namespace hrcontact
         << ". Place the bodies so that the slave surface does not enter the "
            "master body.";
       return InputError(s.str());
+    }
+
+    /** A tenth of the size of the master boundary's bounding box. */
+    template <int dim>
+    double
+    default_reach(const std::vector<const BoundaryFace<dim> *> &masters)
+    {
+      Point<dim> low = masters.front()->points.front(), high = low;
+      for (const BoundaryFace<dim> *face : masters)
+        for (const auto &x : face->points)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              low[d]  = std::min(low[d], x[d]);
+              high[d] = std::max(high[d], x[d]);
+            }
+      return 0.1 * low.distance(high);
+    }
+
+    /** A fully covered slave node's row from its mortar sums: w_n = sum_m
+     * (M_m / D) w_m + G / D along the node's mean normal. */
+    template <typename Projection, int dim>
+    Projection
+    mortar_projection(const MortarSums &S, const Tensor<1, dim> &normal)
+    {
+      Projection projection;
+      projection.normal = normal / normal.norm();
+      projection.gap    = S.G / S.D;
+      for (const auto &[master, M] : S.M)
+        if (std::abs(M) > 1e-12 * S.D)
+          {
+            projection.master_nodes.push_back(master);
+            projection.shape_values.push_back(M / S.D);
+          }
+      return projection;
     }
 
     std::string
@@ -584,19 +311,8 @@ namespace hrcontact
         // The default reach: a tenth of the master boundary's size, far
         // more than the gap at the edge of any contact zone the small
         // deformation theory describes.
-        double reach = pair.reach;
-        if (!(reach > 0))
-          {
-            Point<dim> low = masters.front()->points.front(), high = low;
-            for (const BoundaryFace<dim> *face : masters)
-              for (const auto &x : face->points)
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    low[d]  = std::min(low[d], x[d]);
-                    high[d] = std::max(high[d], x[d]);
-                  }
-            reach = 0.1 * low.distance(high);
-          }
+        const double reach =
+          (pair.reach > 0) ? pair.reach : default_reach(masters);
         const auto mortar_rows =
           mortar ? mortar_sums<dim>(faces, pair.slave, masters, reach) :
                    std::map<unsigned int, MortarSums>();
@@ -621,16 +337,9 @@ namespace hrcontact
                 m->second.D > 0)
               {
                 const MortarSums &S = m->second;
-                Projection        projection;
-                projection.pair   = k;
-                projection.normal = slave.second / slave.second.norm();
-                projection.gap    = S.G / S.D;
-                for (const auto &[master, M] : S.M)
-                  if (std::abs(M) > 1e-12 * S.D)
-                    {
-                      projection.master_nodes.push_back(master);
-                      projection.shape_values.push_back(M / S.D);
-                    }
+                Projection        projection =
+                  mortar_projection<Projection>(S, slave.second);
+                projection.pair = k;
                 // The faces' total length (2D) or area (3D) as a size.
                 const double size = dim == 2 ? S.length : std::sqrt(S.length);
                 if (projection.gap < -1e-8 * size)
@@ -642,60 +351,26 @@ namespace hrcontact
                 add(node, projection);
                 continue;
               }
-            double     best = std::numeric_limits<double>::max();
-            Projection projection;
-            for (const BoundaryFace<dim> *face : masters)
-              {
-                // Only faces that face the slave node.
-                if (!(face->normal * slave.second < 0))
-                  continue;
-                const auto   xi     = closest_point<dim>(face->points, x);
-                const double tol    = 1e-8;
-                bool         inside = true;
-                for (const double a : xi)
-                  inside &= (a >= -tol && a <= 1 + tol);
-                if (!inside)
-                  continue;
-                std::array<double, dim - 1> clamped;
-                for (unsigned int a = 0; a < dim - 1; ++a)
-                  clamped[a] = std::clamp(xi[a], 0., 1.);
-                std::vector<double>                      N;
-                std::vector<std::array<double, dim - 1>> dN;
-                face_shape<dim>(clamped, N, dN);
-                Point<dim> y;
-                double     length = 0;
-                for (unsigned int v = 0; v < face->points.size(); ++v)
-                  {
-                    y += N[v] * face->points[v];
-                    length =
-                      std::max(length,
-                               face->points[v].distance(
-                                 face->points[(v + 1) % face->points.size()]));
-                  }
-                const double distance = x.distance(y);
-                if (distance > reach || distance >= best)
-                  continue;
-                best              = distance;
-                projection.pair   = k;
-                projection.normal = -face->normal;
-                projection.gap    = (y - x) * projection.normal;
-                projection.master_nodes.clear();
-                projection.shape_values.clear();
-                for (unsigned int v = 0; v < face->nodes.size(); ++v)
-                  if (std::abs(N[v]) > 1e-12)
-                    {
-                      projection.master_nodes.push_back(face->nodes[v]);
-                      projection.shape_values.push_back(N[v]);
-                    }
-                if (projection.gap < -1e-8 * length)
-                  throw overlap_error(where,
-                                      system.describe_node(node),
-                                      -projection.gap,
-                                      "");
-                projection.gap = std::max(projection.gap, 0.);
-              }
-            if (best == std::numeric_limits<double>::max())
+            // Node to segment.
+            const auto closest =
+              closest_master_point<dim>(masters, x, slave.second, reach);
+            if (closest.overlap > 0)
+              throw overlap_error(where,
+                                  system.describe_node(node),
+                                  closest.overlap,
+                                  "");
+            if (!closest.face)
               continue;
+            Projection projection;
+            projection.pair   = k;
+            projection.normal = -closest.face->normal;
+            projection.gap    = std::max(closest.gap, 0.);
+            for (unsigned int v = 0; v < closest.face->nodes.size(); ++v)
+              if (std::abs(closest.N[v]) > 1e-12)
+                {
+                  projection.master_nodes.push_back(closest.face->nodes[v]);
+                  projection.shape_values.push_back(closest.N[v]);
+                }
             add(node, projection);
           }
         if (found == 0)
