@@ -17,7 +17,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <hrcontact/constraints/constraint_law.h>
-#include <hrcontact/solvers/augmented_lagrangian_solver.h>
+#include <hrcontact/solvers/al/augmented_lagrangian_solver.h>
 #include <hrcontact/solvers/condensed/condensed_step.h>
 #include <hrcontact/solvers/equilibrium_reduction.h>
 #include <hrcontact/solvers/null_space_step.h>

@@ -17,7 +17,7 @@
 #include <hrcontact/discretisation/equilibrium_system.h>
 #include <hrcontact/discretisation/mixed_spaces.h>
 #include <hrcontact/postprocess/postprocessor.h>
-#include <hrcontact/solvers/augmented_lagrangian_solver.h>
+#include <hrcontact/solvers/al/augmented_lagrangian_solver.h>
 #include <hrcontact/solvers/equilibrium_reduction.h>
 #include <hrcontact/solvers/material_loop.h>
 #include <hrcontact/solvers/nested_level_runner.h>

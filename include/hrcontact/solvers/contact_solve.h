@@ -4,7 +4,7 @@
 #include <deal.II/base/timer.h>
 
 #include <hrcontact/core/results.h>
-#include <hrcontact/solvers/augmented_lagrangian_solver.h>
+#include <hrcontact/solvers/al/augmented_lagrangian_solver.h>
 #include <hrcontact/solvers/material_loop.h>
 #include <hrcontact/solvers/newton_step_path.h>
 

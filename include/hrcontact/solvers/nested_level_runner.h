@@ -6,7 +6,7 @@
 
 #include <hrcontact/core/path_choice.h>
 #include <hrcontact/core/results.h>
-#include <hrcontact/solvers/augmented_lagrangian_solver.h>
+#include <hrcontact/solvers/al/augmented_lagrangian_solver.h>
 #include <hrcontact/solvers/linear_solver_settings.h>
 #include <hrcontact/solvers/nested_iteration.h>
 

@@ -1,5 +1,5 @@
-#ifndef hrcontact_augmented_lagrangian_solver_h
-#define hrcontact_augmented_lagrangian_solver_h
+#ifndef hrcontact_al_augmented_lagrangian_solver_h
+#define hrcontact_al_augmented_lagrangian_solver_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
@@ -9,6 +9,7 @@
 #include <hrcontact/constraints/constraint_law.h>
 #include <hrcontact/core/input.h>
 #include <hrcontact/discretisation/equilibrium_system.h>
+#include <hrcontact/solvers/al/stopping_tests.h>
 #include <hrcontact/solvers/contact_iteration.h>
 #include <hrcontact/solvers/nested_iteration.h>
 #include <hrcontact/solvers/newton_step_path.h>
@@ -44,15 +45,19 @@ namespace hrcontact
    * e_i = [i in A](mu_i - alpha_i p_i) - [i in A_old](mu_old_i - alpha_old_i
    * p_i): eps_k is applied to |e|, the gradient in contact coordinates.
    *
-   * The state it iterates on is a ContactIteration (private base: the
-   * solver is implemented in terms of it); result() hands it out read-only.
+   * The state it iterates on is a ContactIteration member; result() hands
+   * it out read-only. The iteration itself runs in MultiplierIteration
+   * (consistent, Macaulay, pure penalty; classical or diagonal) or in
+   * DisplacementIteration (eq. 29), after the trial solve of Step 0 here;
+   * the stopping tests are in al/stopping_tests, the messages in
+   * al/outcome_messages.cc.
    *
    * Under MPI each process updates the rows of its owned and ghost nodes
    * (ContactRowPartition, from the path), from the p their owners
    * computed; norms, counts and decisions are reductions over the owned
    * rows, and the result is gathered once at the end of a solve.
    */
-  class AugmentedLagrangianSolver : private ContactIteration
+  class AugmentedLagrangianSolver
   {
   public:
     static void
@@ -120,7 +125,7 @@ namespace hrcontact
     const ContactIteration &
     result() const
     {
-      return *this;
+      return state;
     }
 
     /**
@@ -190,17 +195,7 @@ namespace hrcontact
     const ConstraintLaw &
     law_of(const EquilibriumRow &row) const;
 
-    /** A body that some rigid-body motion leaves held by contact only. */
-    struct BodyHeldByContact
-    {
-      /** For messages: "body 2", ...; empty in a one-body scene. */
-      std::string name;
-      /** How many of its rigid-body motions only contact holds. */
-      unsigned int free_motions = 0;
-      /** The contact rows (indices into contact_rows) at its nodes,
-       * a pair row at its slave and its master nodes. */
-      std::vector<unsigned int> rows;
-    };
+    using BodyHeldByContact = hrcontact::BodyHeldByContact;
 
     /**
      * Set before solve: the bodies whose rigid-body motions are held by
@@ -212,6 +207,9 @@ namespace hrcontact
     std::vector<BodyHeldByContact> held_only_by_contact;
 
   private:
+    friend class MultiplierIteration;
+    friend class DisplacementIteration;
+
     /** The iteration itself; solve() sets the outcome from its flags. */
     bool
     iterate(const EquilibriumSystem &system,
@@ -219,9 +217,26 @@ namespace hrcontact
             const double             load_scale,
             std::ostream            &log);
 
-    /** The outcome from the flags iterate() left. */
+    /**
+     * Step 0: the trial solution, every row on its law's trial piece (held
+     * at w_n = g); or the carried state of a coarser level (start_from):
+     * its multipliers and compliances, and the pieces its reactions select.
+     * Sets the tolerance from the load and the trial reactions; returns the
+     * force scale this level measured with a trial solve of its own (0: not
+     * measured).
+     */
+    double
+    trial_step(const EquilibriumSystem &system,
+               NewtonStepPath          &path,
+               const double             load_scale,
+               const bool               started);
+
+    /** The line that opens a solve in the log. */
     void
-    set_outcome();
+    log_start(const unsigned int n_rows,
+              const bool         started,
+              const double       measured_scale,
+              std::ostream      &log) const;
 
     /**
      * The iteration computes the rows each process sees; afterwards every
@@ -243,6 +258,9 @@ namespace hrcontact
     found_floating_body(const std::function<bool(unsigned int)> &is_free,
                         const unsigned int                       update);
 
+    /** The state the iteration works on and hands out (result()). */
+    ContactIteration state;
+
     /** The start of the next solve (start_from), if any. */
     ContactStart start;
     bool         has_start = false;
@@ -250,23 +268,12 @@ namespace hrcontact
     /** The relinearisation of the running solve, or null. */
     RowRelinearisation *relinearisation = nullptr;
 
-    // How the last solve stopped (see SolveOutcome).
-    bool converged = false, diverged = false, cycled = false, periodic = false,
-         floating = false, roundoff_limited = false;
-    /** CG's tolerance when the inner iteration cycled at its floor (0: the
-     * path solved exactly). */
-    double cycle_linear_tolerance = 0;
+    /** How the last solve stopped (see SolveOutcome). */
+    StopFlags flags;
     /** Why the smooth pieces of the inner iteration cycled. */
     std::string
     cycle_cause() const;
 
-    /** The displacement AL of eq. 29 (Regularisation = displacement). */
-    bool
-    solve_displacement(const EquilibriumSystem &system,
-                       const std::vector<bool> &unilateral,
-                       NewtonStepPath          &path,
-                       const dealii::Timer     &timer,
-                       std::ostream            &log);
     /** Append a row to history and print it. */
     void
     record(const unsigned int k,
