@@ -4,6 +4,7 @@
 
 #include <hrcontact/constraints/curved_obstacles.h>
 #include <hrcontact/discretisation/hr_assembler.h>
+#include <hrcontact/discretisation/row_classification.h>
 #include <hrcontact/solvers/newton_step_path.h>
 
 #include <cmath>

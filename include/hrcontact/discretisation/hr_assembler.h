@@ -29,7 +29,8 @@ namespace hrcontact
     HRAssembler(const Scene<dim> &scene, const MixedSpaces<dim> &spaces);
 
     /**
-     * The C, Q and H rows, the nodes and the dimensions of the system;
+     * The C, Q and H rows, the nodes and the dimensions of the system
+     * (RowClassification);
      * with `lean_rows`, the free rows of unconstrained nodes stay implicit
      * (EquilibriumSystem::lean_rows).
      */
@@ -110,14 +111,6 @@ namespace hrcontact
     /** The stresses the material is evaluated at (null: zero stress). */
     std::shared_ptr<const FieldVector> stress_state;
   };
-  /**
-   * The free directions of a node: Gram-Schmidt remainders of the unit axes
-   * (in axis order) against the orthonormal directions `taken`, until they
-   * span the space.
-   */
-  template <int dim>
-  std::vector<dealii::Tensor<1, dim>>
-  orthogonal_complement(const std::vector<dealii::Tensor<1, dim>> &taken);
 } // namespace hrcontact
 
 #endif
