@@ -28,9 +28,9 @@ automatic_choice(const std::string &scene, const std::string &extra)
                      "cg-amg\nend\n");
   const auto &r = problem->results();
   std::cout << scene << ": largest cell aspect ratio above 4: "
-            << (r.largest_aspect_ratio > 4 ? "yes" : "no")
-            << ", automatic aggregation by " << r.linear_statistics.aggregation
-            << std::endl;
+            << (r.solve.largest_aspect_ratio > 4 ? "yes" : "no")
+            << ", automatic aggregation by "
+            << r.solve.linear_statistics.aggregation << std::endl;
 }
 
 double
@@ -73,7 +73,7 @@ main(int argc, char **argv)
       std::vector<double> difference(p_ref.size());
       for (unsigned int i = 0; i < p_ref.size(); ++i)
         difference[i] = r.contact->p[i] - p_ref[i];
-      floor_iterations[k++] = r.floor_iterations;
+      floor_iterations[k++] = r.diagnostics.floor_iterations;
       std::cout << "Hertz refinement 5, aggregation by " << aggregation
                 << ": converged: " << (r.converged() ? "yes" : "NO")
                 << ", p as UMFPACK to 1e-8: "

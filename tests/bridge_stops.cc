@@ -40,7 +40,7 @@ run(const std::string &title, const std::string &extra)
       double w = 0;
       for (const auto &[dof, c] : row.combination)
         w += c * problem->results().displacement[dof];
-      const double p = problem->results().contact_reactions[k];
+      const double p = problem->results().reactions.contact[k];
       reactions.push_back(p);
       sum_x += p * row.combination[0].second;
       const unsigned int branch = solver.pieces[k].branch;

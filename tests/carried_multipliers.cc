@@ -50,11 +50,12 @@ main(int argc, char **argv)
             << "\n  displacements agree to 1e-8: "
             << hrcontact_tests::check(differences[1], 1e-8)
             << "\n  fine level: " << a.contact->history.size()
-            << " multiplier updates and " << a.linear_statistics.solves
+            << " multiplier updates and " << a.solve.linear_statistics.solves
             << " linear solves with the update, " << b.contact->history.size()
-            << " and " << b.linear_statistics.solves
+            << " and " << b.solve.linear_statistics.solves
             << " without: fewer solves: "
-            << (a.linear_statistics.solves < b.linear_statistics.solves ?
+            << (a.solve.linear_statistics.solves <
+                    b.solve.linear_statistics.solves ?
                   "yes" :
                   "NO")
             << std::endl;

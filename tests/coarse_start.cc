@@ -138,8 +138,8 @@ main(int argc, char **argv)
               << "\n  first fine solve, CG iterations carried / from zero <= "
                  "0.9: "
               << hrcontact_tests::check(
-                   double(a.linear_statistics.first_solve_iterations) /
-                     b.linear_statistics.first_solve_iterations,
+                   double(a.solve.linear_statistics.first_solve_iterations) /
+                     b.solve.linear_statistics.first_solve_iterations,
                    0.9)
               << std::endl;
 }

@@ -171,7 +171,7 @@ stop_on_fixed_master()
             const auto &row = r.system.rows[r.system.contact_rows[k]];
             const auto &x   = r.system.node_coordinates[row.node];
             by_point[{std::lround(1e6 * x[0]), std::lround(1e6 * x[1])}] =
-              r.contact_reactions[k];
+              r.reactions.contact[k];
           }
         return by_point;
       };

@@ -71,12 +71,12 @@ balance(const hrcontact::Results<2> &r)
   for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
     {
       const auto  &row = sys.rows[sys.contact_rows[k]];
-      const double s   = add(row, r.contact_reactions[k]);
-      if (row.unilateral && r.contact_reactions[k] != 0)
-        pair_sum = std::max(pair_sum, s / std::abs(r.contact_reactions[k]));
+      const double s   = add(row, r.reactions.contact[k]);
+      if (row.unilateral && r.reactions.contact[k] != 0)
+        pair_sum = std::max(pair_sum, s / std::abs(r.reactions.contact[k]));
     }
   for (unsigned int k = 0; k < sys.prescribed_rows.size(); ++k)
-    add(sys.rows[sys.prescribed_rows[k]], r.support_reactions[k]);
+    add(sys.rows[sys.prescribed_rows[k]], r.reactions.support[k]);
   return {pair_sum, std::max(std::abs(total[0]), std::abs(total[1])) / largest};
 }
 

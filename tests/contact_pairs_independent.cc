@@ -178,7 +178,7 @@ main()
           if (!row.unilateral)
             continue;
           const double own = p_own.at(row.node);
-          dp      = std::max(dp, std::abs(own - r.contact_reactions[k]));
+          dp      = std::max(dp, std::abs(own - r.reactions.contact[k]));
           p_scale = std::max(p_scale, std::abs(own));
           ++compared;
         }

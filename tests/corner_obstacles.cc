@@ -61,7 +61,7 @@ run(const double theta, const double q_x, const std::string &path)
           worst_reaction =
             std::max(worst_reaction,
                      std::abs(
-                       problem->results().contact_reactions[nodes[j].second] -
+                       problem->results().reactions.contact[nodes[j].second] -
                        exact) /
                        (pressure * 0.125));
           corner_rows += (nodes[j].first == 0);
@@ -153,7 +153,7 @@ run_tilted()
                       "yes" :
                       "NO")
                 << std::endl;
-      reactions.push_back(problem->results().contact_reactions);
+      reactions.push_back(problem->results().reactions.contact);
     }
   double difference = 0, scale = 0;
   for (unsigned int k = 0; k < reactions[0].size(); ++k)

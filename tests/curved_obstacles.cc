@@ -37,7 +37,7 @@ run(const std::string &contact)
   Result      result;
   result.converged = solver.converged();
   result.updates   = solver.history.size();
-  result.reactions = problem->results().contact_reactions;
+  result.reactions = problem->results().reactions.contact;
   // Top nodes by x: total force (full model = twice the half), the last
   // node in contact and the first open one, the pressure at the centre.
   std::vector<std::pair<double, unsigned int>> nodes;
@@ -46,7 +46,7 @@ run(const std::string &contact)
       const EquilibriumRow &row = system.rows[system.contact_rows[k]];
       const double          x   = system.node_coordinates[row.node][0];
       nodes.emplace_back(x, k);
-      result.P -= 2 * problem->results().contact_reactions[k] *
+      result.P -= 2 * problem->results().reactions.contact[k] *
                   row.direction_component(1);
       result.worst_gap =
         std::max(result.worst_gap,
@@ -59,7 +59,7 @@ run(const std::string &contact)
         solver.released[nodes[j + 1].second])
       result.a = 0.5 * (nodes[j].first + nodes[j + 1].first);
   result.p0 =
-    -problem->results().contact_reactions[nodes[0].second] / (0.5 * result.h);
+    -problem->results().reactions.contact[nodes[0].second] / (0.5 * result.h);
   return result;
 }
 

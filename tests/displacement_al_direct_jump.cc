@@ -36,8 +36,8 @@ main()
     run("consistent augmented Lagrangian", "classical", "1e-12");
   const auto displacement =
     run("displacement augmented Lagrangian", "diagonal", "1e-8");
-  const auto &a       = reference->results().contact_reactions;
-  const auto &b       = displacement->results().contact_reactions;
+  const auto &a       = reference->results().reactions.contact;
+  const auto &b       = displacement->results().reactions.contact;
   double      largest = 0, difference = 0;
   for (unsigned int i = 0; i < a.size(); ++i)
     {

@@ -26,13 +26,14 @@ namespace
   {
     const auto  problem = solve_from_text<dim>(text + compare);
     const auto &r       = problem->results();
-    std::cout << name << ": stress code " << r.material_steps
+    std::cout << name << ": stress code " << r.material.newton_steps
               << " Newton steps, displacement code "
-              << r.displacement_code_steps
-              << " (<= 8: " << check(r.displacement_code_steps, 8)
-              << "), at most " << r.displacement_code_local_steps
+              << r.diagnostics.displacement_code_steps
+              << " (<= 8: " << check(r.diagnostics.displacement_code_steps, 8)
+              << "), at most " << r.diagnostics.displacement_code_local_steps
               << " local steps a Gauss point; displacements agree to 1e-9: "
-              << check(r.displacement_code_difference, 1e-9) << std::endl;
+              << check(r.diagnostics.displacement_code_difference, 1e-9)
+              << std::endl;
   }
 } // namespace
 

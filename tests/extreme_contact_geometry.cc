@@ -46,7 +46,7 @@ statics(const hrcontact::HRProblem<2> &problem,
   for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
     {
       const auto  &row = sys.rows[sys.contact_rows[k]];
-      const double p   = problem.results().contact_reactions[k];
+      const double p   = problem.results().reactions.contact[k];
       // The reaction on the body is p n (n = (0, -1) here).
       const double fy = p * row.combination[1].second;
       force += fy;
@@ -118,7 +118,7 @@ main(int argc, char **argv)
       {
         open += al.released[k];
         p_max =
-          std::max(p_max, std::abs(above->results().contact_reactions[k]));
+          std::max(p_max, std::abs(above->results().reactions.contact[k]));
       }
     for (unsigned int i = 0; i < free_beam->results().displacement.size(); ++i)
       {
@@ -234,14 +234,14 @@ main(int argc, char **argv)
       "subsection Augmented Lagrangian\n  set Relative tolerance = 1e-14\nend\n" +
       quiet);
     double p_max = 0, diff = 0;
-    for (unsigned int k = 0; k < reference->results().contact_reactions.size();
+    for (unsigned int k = 0; k < reference->results().reactions.contact.size();
          ++k)
       {
         p_max =
-          std::max(p_max, std::abs(reference->results().contact_reactions[k]));
+          std::max(p_max, std::abs(reference->results().reactions.contact[k]));
         diff = std::max(diff,
-                        std::abs(reference->results().contact_reactions[k] -
-                                 tight->results().contact_reactions[k]));
+                        std::abs(reference->results().reactions.contact[k] -
+                                 tight->results().reactions.contact[k]));
       }
     std::cout << "tolerance 1e-14: converged: "
               << (tight->results().converged() ? "yes" : "NO") << " after "

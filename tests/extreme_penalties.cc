@@ -26,7 +26,7 @@ main()
 {
   const auto reference = run(1e4);
   double     p_scale   = 0;
-  for (const double p : reference->results().contact_reactions)
+  for (const double p : reference->results().reactions.contact)
     p_scale = std::max(p_scale, std::abs(p));
   for (const double factor : {1e-12, 1e-3, 1., 1e12})
     {
@@ -34,14 +34,14 @@ main()
       const auto &al      = (*problem->results().contact);
       double      p_error = 0;
       bool        finite  = true;
-      for (unsigned int k = 0; k < problem->results().contact_reactions.size();
+      for (unsigned int k = 0; k < problem->results().reactions.contact.size();
            ++k)
         {
-          finite &= std::isfinite(problem->results().contact_reactions[k]);
+          finite &= std::isfinite(problem->results().reactions.contact[k]);
           p_error =
             std::max(p_error,
-                     std::abs(problem->results().contact_reactions[k] -
-                              reference->results().contact_reactions[k]));
+                     std::abs(problem->results().reactions.contact[k] -
+                              reference->results().reactions.contact[k]));
         }
       std::cout << "alpha_0 = " << factor << " x c_h: "
                 << (al.converged() ? "converged" :

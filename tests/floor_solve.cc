@@ -23,7 +23,7 @@ compare(const std::string &scene, const unsigned int dim)
     "subsection Output\n  set Time the Q1 floor = true\n"
     "  set Write solution = false\n  set Output directory = results\nend\n";
   auto report = [&](const auto &results) {
-    hrcontact::FieldVector d = results.floor_displacement;
+    hrcontact::FieldVector d = results.diagnostics.floor_displacement;
     d -= results.displacement;
     const auto &s = results.summary;
     std::cout << scene << " (" << s.get("cells") << " cells, "

@@ -66,21 +66,23 @@ main(int argc, char **argv)
       std::cout
         << "CG + AMG at Tolerance = " << tolerance
         << ": converged: " << (r.converged() ? "yes" : "NO") << ", tightened: "
-        << (r.linear_statistics.tightenings > 0 ? "yes" : "no")
+        << (r.solve.linear_statistics.tightenings > 0 ? "yes" : "no")
         << ", final tolerance "
-        << (r.linear_statistics.tightenings > 0 ?
+        << (r.solve.linear_statistics.tightenings > 0 ?
               "= Tolerance x 1e-2 per tightening (" +
-                std::to_string(r.linear_statistics.tightenings) +
+                std::to_string(r.solve.linear_statistics.tightenings) +
                 " tightenings): " +
                 hrcontact_tests::check(
-                  std::abs(r.linear_statistics.tolerance /
-                             (std::stod(tolerance) *
-                              std::pow(1e-2, r.linear_statistics.tightenings)) -
-                           1),
+                  std::abs(
+                    r.solve.linear_statistics.tolerance /
+                      (std::stod(tolerance) *
+                       std::pow(1e-2, r.solve.linear_statistics.tightenings)) -
+                    1),
                   1e-12) :
               std::string("as set: ") +
-                (r.linear_statistics.tolerance == std::stod(tolerance) ? "yes" :
-                                                                         "NO"))
+                (r.solve.linear_statistics.tolerance == std::stod(tolerance) ?
+                   "yes" :
+                   "NO"))
         << ", p as UMFPACK to 1e-7: "
         << hrcontact_tests::check(difference / p_max, 1e-7) << std::endl;
     }
@@ -96,7 +98,7 @@ main(int argc, char **argv)
             "  set Warm start = " + (warm ? "true" : "false") + "\n");
       const auto &r          = cg->results();
       const auto &p          = r.contact->p;
-      const auto &statistics = r.linear_statistics;
+      const auto &statistics = r.solve.linear_statistics;
       double      difference = 0;
       for (unsigned int i = 0; i < p.size(); ++i)
         difference = std::max(difference, std::abs(p[i] - p_ref[i]));

@@ -54,7 +54,7 @@ main()
   for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
     {
       const auto &row = sys.rows[sys.contact_rows[k]];
-      add(row, r.contact_reactions[k]);
+      add(row, r.reactions.contact[k]);
       const double x       = sys.node_coordinates[row.node][0];
       const bool   pressed = !r.contact->released[k];
       if (x < 0)
@@ -69,7 +69,7 @@ main()
         }
     }
   for (unsigned int k = 0; k < sys.prescribed_rows.size(); ++k)
-    add(sys.rows[sys.prescribed_rows[k]], r.support_reactions[k]);
+    add(sys.rows[sys.prescribed_rows[k]], r.reactions.support[k]);
   std::cout << "vertical load " << std::setprecision(6) << -load
             << ", support reactions balance it (1e-10): "
             << hrcontact_tests::check(std::abs(load + reaction) / -load, 1e-10)

@@ -39,8 +39,9 @@ namespace
   describe(const hrcontact::Results<2> &r)
   {
     std::ostringstream s;
-    s << r.material_steps << " Newton steps, last stress change < 1e-10: "
-      << check(r.material_changes.empty() ? 1. : r.material_changes.back(),
+    s << r.material.newton_steps
+      << " Newton steps, last stress change < 1e-10: "
+      << check(r.material.changes.empty() ? 1. : r.material.changes.back(),
                1e-10)
       << ", converged " << (r.converged() ? "yes" : "NO");
     return s.str();
@@ -53,9 +54,10 @@ namespace
   describe_dense(const hrcontact::Results<2> &r)
   {
     std::ostringstream s;
-    s << "at most 12 Newton steps: " << (r.material_steps <= 12 ? "yes" : "NO")
+    s << "at most 12 Newton steps: "
+      << (r.material.newton_steps <= 12 ? "yes" : "NO")
       << ", last stress change < 1e-8: "
-      << check(r.material_changes.empty() ? 1. : r.material_changes.back(),
+      << check(r.material.changes.empty() ? 1. : r.material.changes.back(),
                1e-8)
       << ", converged " << (r.converged() ? "yes" : "NO");
     return s.str();

@@ -28,7 +28,7 @@ namespace
         const auto &row = res.system.rows[res.system.prescribed_rows[k]];
         const auto &x   = res.system.node_coordinates[row.node];
         if (std::abs(x[0] - 1) < 1e-12 && row.combination[0].second == 1)
-          moment += res.support_reactions[k] * x[1];
+          moment += res.reactions.support[k] * x[1];
       }
     return moment;
   }
@@ -51,11 +51,11 @@ namespace
       dynamic_cast<const dealii::parallel::distributed::Triangulation<2> *>(
         &P.triangulation()) != nullptr;
     double history =
-      (P.material_changes.size() == S.material_changes.size()) ? 0. : 1.;
-    for (unsigned int k = 0; history < 1 && k < P.material_changes.size(); ++k)
+      (P.material.changes.size() == S.material.changes.size()) ? 0. : 1.;
+    for (unsigned int k = 0; history < 1 && k < P.material.changes.size(); ++k)
       history =
         std::max(history,
-                 std::abs(P.material_changes[k] - S.material_changes[k]));
+                 std::abs(P.material.changes[k] - S.material.changes[k]));
     const double moment_difference =
       std::abs(end_moment(P) - end_moment(S)) / std::abs(end_moment(S));
     // Every process compares its own run: the worst of them counts.
@@ -67,8 +67,8 @@ namespace
                 << (distributed ? "distributed" : "serial (WRONG)")
                 << " mesh on "
                 << dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
-                << " processes, " << P.material_steps << " and "
-                << S.material_steps << " Newton steps\n"
+                << " processes, " << P.material.newton_steps << " and "
+                << S.material.newton_steps << " Newton steps\n"
                 << "  stress changes step by step agree to 1e-9: "
                 << check(history, 1e-9)
                 << "\n  end moments agree to 1e-10: " << check(moment, 1e-10)

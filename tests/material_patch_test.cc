@@ -92,10 +92,10 @@ namespace
     const auto [max_err, l2_err] =
       hrcontact::stress_error(r.spaces, r.stress, *exact);
     std::cout << "  " << name << ": " << r.triangulation().n_active_cells()
-              << " distorted cells, " << r.material_steps
+              << " distorted cells, " << r.material.newton_steps
               << " Newton steps, last stress change < 1e-10: "
-              << check(r.material_changes.empty() ? 1. :
-                                                    r.material_changes.back(),
+              << check(r.material.changes.empty() ? 1. :
+                                                    r.material.changes.back(),
                        1e-10)
               << "\n    max relative stress error < 1e-10: "
               << check(max_err, 1e-10)

@@ -28,16 +28,16 @@ namespace
     const auto  dense = solve("null-space"), sparse = solve("condensed");
     const auto &a = dense->results(), &b = sparse->results();
     double      history =
-      (a.material_changes.size() == b.material_changes.size()) ? 0. : 1.;
-    for (unsigned int k = 0; history < 1 && k < a.material_changes.size(); ++k)
+      (a.material.changes.size() == b.material.changes.size()) ? 0. : 1.;
+    for (unsigned int k = 0; history < 1 && k < a.material.changes.size(); ++k)
       // A change is itself a difference of iterates: compare it against
       // the iterates' size, 1e-12 of which is round-off.
       history =
         std::max(history,
-                 std::abs(a.material_changes[k] - b.material_changes[k]));
-    std::cout << name << ": paths " << a.solution_path << " and "
-              << b.solution_path << ", " << a.material_steps << " and "
-              << b.material_steps << " Newton steps\n"
+                 std::abs(a.material.changes[k] - b.material.changes[k]));
+    std::cout << name << ": paths " << a.solve.path << " and " << b.solve.path
+              << ", " << a.material.newton_steps << " and "
+              << b.material.newton_steps << " Newton steps\n"
               << "  stress changes step by step agree to 1e-10: "
               << check(history, 1e-10) << "\n  stresses agree to 1e-10: "
               << check(relative(a.stress, b.stress), 1e-10)

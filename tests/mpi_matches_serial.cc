@@ -242,7 +242,7 @@ compare(const std::string &scene, const std::string &extra)
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     std::cout
       << scene << " (" << dim << "D, " << P.system.n_displacement_dofs
-      << " dofs, " << P.linear_statistics.solver << "):\n  "
+      << " dofs, " << P.solve.linear_statistics.solver << "):\n  "
       << partition.n_processes
       << " processes, distributed mesh: " << (distributed_mesh ? "yes" : "NO")
       << ", partition complete: " << (complete ? "yes" : "NO")

@@ -72,8 +72,8 @@ compare(const std::string &scene,
     << (b.contact->total_newton_steps <= a.contact->total_newton_steps ? "yes" :
                                                                          "NO")
     << "\n  Q-row reactions agree to 1e-8: "
-    << hrcontact_tests::check(relative_difference(a.contact_reactions,
-                                                  b.contact_reactions),
+    << hrcontact_tests::check(relative_difference(a.reactions.contact,
+                                                  b.reactions.contact),
                               1e-8)
     << "\n  displacements agree to 1e-8: "
     << hrcontact_tests::check(relative_difference(to_vector(a.displacement),

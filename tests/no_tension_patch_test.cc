@@ -79,14 +79,15 @@ namespace
       hrcontact::stress_error(r.spaces, r.stress, *exact);
     std::cout << "  " << name << " ('" << constraint
               << "'): converged in at most 20 updates: "
-              << (r.constraint_residuals.size() <= 20 ? "yes" : "NO")
+              << (r.stress_constraint.residuals.size() <= 20 ? "yes" : "NO")
               << ", last residual < 1e-10: "
-              << check(r.constraint_residuals.back(), 1e-10)
+              << check(r.stress_constraint.residuals.back(), 1e-10)
               << "\n    stresses against the closed form, max < 1e-10: "
               << check(max_err, 1e-10)
               << ", L2 < 1e-10: " << check(l2_err, 1e-10)
-              << "\n    cracked fraction " << r.cracked_fraction
-              << " (expected " << cracked << ")" << std::endl;
+              << "\n    cracked fraction "
+              << r.stress_constraint.cracked_fraction << " (expected "
+              << cracked << ")" << std::endl;
   }
 
   /** eps = R diag(e1, e2) R^T, R the rotation by `degrees`. */

@@ -44,9 +44,9 @@ main()
       const auto &res = problem->results();
       std::cout << (4 << r) / 4 << " x " << 6 * (1 << r)
                 << " cells: converged in at most 20 updates: "
-                << (res.constraint_residuals.size() <= 20 ? "yes" : "NO")
+                << (res.stress_constraint.residuals.size() <= 20 ? "yes" : "NO")
                 << ", last residual < 1e-10: "
-                << check(res.constraint_residuals.back(), 1e-10) << '\n';
+                << check(res.stress_constraint.residuals.back(), 1e-10) << '\n';
       print_kkt(*problem);
 
       // The section through the middle of the cell row at mid-height.
@@ -81,7 +81,8 @@ main()
         }
       std::cout << "  compressed width / 3 (b/2 - e) = " << width / c
                 << ", peak stress / (2N/c) = " << -s_peak / peak
-                << ", cracked area fraction " << res.cracked_fraction
+                << ", cracked area fraction "
+                << res.stress_constraint.cracked_fraction
                 << "\n  tension the cell-centre cone leaves on the line: "
                 << "largest / (2N/c) = " << s_tension / peak
                 << ", resultant / N = " << tension / N

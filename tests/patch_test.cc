@@ -122,7 +122,7 @@ run(const std::string &element)
     for (unsigned int k = 0;
          k < problem->results().system.prescribed_rows.size();
          ++k)
-      rx += problem->results().support_reactions[k] *
+      rx += problem->results().reactions.support[k] *
             problem->results()
               .system.rows[problem->results().system.prescribed_rows[k]]
               .combination[0]

@@ -192,7 +192,7 @@ main()
           2,
           "subsection Equilibrium reduction\n  set Path = condensed\nend\n"));
         std::cout << "  " << element << ": self-stress dimension "
-                  << dense->results().reduction->n_self_equilibrated()
+                  << dense->results().solve.reduction->n_self_equilibrated()
                   << ", stresses agree to 1e-10: "
                   << check(relative(dense->results().stress,
                                     condensed->results().stress),

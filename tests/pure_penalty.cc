@@ -43,10 +43,10 @@ main()
       const double tension =
         pp->results().summary.get_double("max_positive_p_n");
       double p_error = 0;
-      for (unsigned int k = 0; k < al->results().contact_reactions.size(); ++k)
+      for (unsigned int k = 0; k < al->results().reactions.contact.size(); ++k)
         p_error = std::max(p_error,
-                           std::abs(pp->results().contact_reactions[k] -
-                                    al->results().contact_reactions[k]));
+                           std::abs(pp->results().reactions.contact[k] -
+                                    al->results().reactions.contact[k]));
       std::cout << "pure penalty, alpha = " << std::setprecision(1) << factor
                 << " x nodal compliance: converged = "
                 << pp->results().summary.get("converged") << ", "

@@ -64,7 +64,7 @@ end_moment(const hrcontact::Results<2> &res)
       // The x rows of the end x = L: c = (1, 0).
       if (std::abs(x[0] - L) < 1e-12 && row.combination[0].second == 1)
         {
-          const double rx = res.support_reactions[k];
+          const double rx = res.reactions.support[k];
           moment += rx * x[1];
           resultant += rx;
           total += std::abs(rx);
@@ -116,7 +116,7 @@ main()
       const double deflection =
         hrcontact::point_value(res, dealii::Point<2>(L / 2, 0), "uy");
       std::cout << std::setw(12) << (1u << r) << " | " << std::setw(12)
-                << res.material_steps << " | " << std::scientific
+                << res.material.newton_steps << " | " << std::scientific
                 << std::setprecision(3) << std::setw(10) << error << " | "
                 << std::fixed << std::setprecision(2)
                 << (previous != 0 ? std::log2(std::abs(previous / error)) : 0.)

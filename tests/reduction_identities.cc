@@ -43,7 +43,7 @@ subsection Supports
 end
 )");
   const auto        &sys     = problem->results().system;
-  const auto        &red     = (*problem->results().reduction);
+  const auto        &red     = (*problem->results().solve.reduction);
   const unsigned int tau = sys.n_stress_dofs, n = sys.free_rows.size(),
                      m = red.n_self_equilibrated();
 

@@ -39,7 +39,7 @@ main()
       const auto reference =
         run(scene, "consistent augmented Lagrangian", "classical");
       double p_scale = 0, u_scale = 0;
-      for (const double p : reference->results().contact_reactions)
+      for (const double p : reference->results().reactions.contact)
         p_scale = std::max(p_scale, std::abs(p));
       for (const double u : reference->results().displacement)
         u_scale = std::max(u_scale, std::abs(u));
@@ -61,11 +61,11 @@ main()
                 double      w   = 0;
                 for (const auto &[dof, c] : row.combination)
                   w += c * problem->results().displacement[dof];
-                const double p = problem->results().contact_reactions[k];
+                const double p = problem->results().reactions.contact[k];
                 p_error =
                   std::max(p_error,
                            std::abs(p -
-                                    reference->results().contact_reactions[k]));
+                                    reference->results().reactions.contact[k]));
                 tension     = std::max(tension, p);
                 penetration = std::max(penetration, w - row.value);
               }

@@ -180,7 +180,7 @@ run(const Case &c)
       const auto  yd  = row.combination[1].first;
       p_diff =
         std::max(p_diff,
-                 std::abs(problem->results().contact_reactions[k] - p[yd]));
+                 std::abs(problem->results().reactions.contact[k] - p[yd]));
       p_max = std::max(p_max, std::abs(p[yd]));
     }
   std::cout << c.name << "\n  independent active set: " << active.size()

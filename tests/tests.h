@@ -196,7 +196,7 @@ namespace hrcontact_tests
     // Force and length scales for the tolerances.
     double force = 0, length = 0;
     for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
-      force = std::max(force, std::abs(problem.results().contact_reactions[k]));
+      force = std::max(force, std::abs(problem.results().reactions.contact[k]));
     for (unsigned int i = 0; i < problem.results().displacement.size(); ++i)
       length = std::max(length, std::abs(problem.results().displacement[i]));
     double       max_p = -1e300, max_pen = -1e300, max_compl = 0;
@@ -209,7 +209,7 @@ namespace hrcontact_tests
         double w = 0;
         for (const auto &[dof, c] : row.combination)
           w += c * problem.results().displacement[dof];
-        const double p = problem.results().contact_reactions[k];
+        const double p = problem.results().reactions.contact[k];
         max_p          = std::max(max_p, p / force);
         max_pen        = std::max(max_pen, (w - row.value) / length);
         max_compl =

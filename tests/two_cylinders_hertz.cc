@@ -58,7 +58,7 @@ main()
         for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
           {
             const auto  &row = sys.rows[sys.contact_rows[k]];
-            const double p   = r.contact_reactions[k];
+            const double p   = r.reactions.contact[k];
             pair_sum =
               std::max(pair_sum, add(row, p) / std::max(std::abs(p), 1e-300));
             rows.emplace_back(sys.node_coordinates[row.node][0],
@@ -66,7 +66,7 @@ main()
                               !r.contact->released[k]);
           }
         for (unsigned int k = 0; k < sys.prescribed_rows.size(); ++k)
-          add(sys.rows[sys.prescribed_rows[k]], r.support_reactions[k]);
+          add(sys.rows[sys.prescribed_rows[k]], r.reactions.support[k]);
         std::sort(rows.begin(), rows.end());
         // Pressure: the nodal reaction over its tributary length along x
         // (half a spacing at the symmetry plane).

@@ -96,8 +96,8 @@ namespace hrcontact
                   {postprocessors.needs_replicated_mesh(scene),
                    MaterialLoop<dim>::iterates(scene)},
                   partition);
-      linear_solver.largest_aspect_ratio = mesh.largest_aspect_ratio();
-      results_.largest_aspect_ratio      = mesh.largest_aspect_ratio();
+      linear_solver.largest_aspect_ratio  = mesh.largest_aspect_ratio();
+      results_.solve.largest_aspect_ratio = mesh.largest_aspect_ratio();
     }
     memory.mark("mesh, dofs and partition");
     mesh.describe(scene, spaces, partition, log);
@@ -127,13 +127,13 @@ namespace hrcontact
   {
     TimerOutput::Scope              t(timer, "equilibrium reduction");
     std::unique_ptr<NewtonStepPath> path;
-    if (results_.solution_path == SolutionPath::condensed)
+    if (results_.solve.path == SolutionPath::condensed)
       path = std::make_unique<CondensedStep>(system, linear_solver, &partition);
     else
       {
         reduction.initialize(system, &log);
-        path               = std::make_unique<NullSpaceStep>(reduction);
-        results_.reduction = &reduction;
+        path                     = std::make_unique<NullSpaceStep>(reduction);
+        results_.solve.reduction = &reduction;
       }
     if (coarse_start.size() > 0)
       {
@@ -151,7 +151,7 @@ namespace hrcontact
     setup(log);
     r.has_contact = system.has_contact();
     displacement_code.check_scene(scene, r.has_contact);
-    r.solution_path = path_choice.choose(
+    r.solve.path = path_choice.choose(
       PathChoice::dense_reduction_bytes(system.n_free_rows,
                                         spaces.stress_unknowns().n_dofs()),
       {contact_solver.regularisation ==
@@ -160,7 +160,7 @@ namespace hrcontact
        mesh.distributed(),
        MaterialLoop<dim>::iterates(scene)},
       log);
-    const bool condensed = (r.solution_path == SolutionPath::condensed);
+    const bool condensed = (r.solve.path == SolutionPath::condensed);
     {
       // The condensed path keeps only the blocks the contact rows need.
       TimerOutput::Scope t(timer, "assembly");
@@ -174,28 +174,28 @@ namespace hrcontact
       memory.mark("Q1 floor (timed)");
     Timer contact_timer;
     nested.run(
-      r.solution_path, contact_solver, linear_solver, r, coarse_start, log);
+      r.solve.path, contact_solver, linear_solver, r, coarse_start, log);
     if (!r.coarse_levels.empty())
       memory.mark("coarser levels");
     const std::unique_ptr<NewtonStepPath> path = build_path(log);
     memory.mark("Newton-step path");
     ContactSolve<dim>(contact_solver, material_loop)
       .run(system, *path, r, timer, log);
-    r.contact_solve_seconds = contact_timer.wall_time();
+    r.solve.seconds = contact_timer.wall_time();
     memory.mark("contact solve");
     {
       TimerOutput::Scope t(timer, "displacements");
       recover_fields(*path, r);
     }
     memory.mark("stresses and displacements");
-    r.linear_statistics = path->statistics;
+    r.solve.linear_statistics = path->statistics;
     displacement_code.run(material_loop.material_iteration,
                           linear_solver,
                           r,
                           log);
     if (condensed)
-      log_linear_statistics(r.linear_statistics,
-                            r.largest_aspect_ratio,
+      log_linear_statistics(r.solve.linear_statistics,
+                            r.solve.largest_aspect_ratio,
                             output.print_timing,
                             log);
     if (!all_finite(r.stress))

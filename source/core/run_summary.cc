@@ -15,18 +15,18 @@ namespace hrcontact
     summary.add("plane_condition", r.scene.plane_condition_name());
     summary.add("stress_element", r.spaces.stress_element_name);
     summary.add("cells", r.triangulation().n_global_active_cells());
-    summary.add("largest_aspect_ratio", r.largest_aspect_ratio);
+    summary.add("largest_aspect_ratio", r.solve.largest_aspect_ratio);
     summary.add("displacement_dofs", system.n_displacement_dofs);
     summary.add("stress_dofs", system.n_stress_dofs);
     summary.add("free_rows", system.n_free_rows);
     summary.add("normal_rows", system.contact_rows.size());
     summary.add("prescribed_rows", system.prescribed_rows.size());
-    summary.add("solution_path", to_string(r.solution_path));
-    if (r.solution_path == SolutionPath::condensed)
+    summary.add("solution_path", to_string(r.solve.path));
+    if (r.solve.path == SolutionPath::condensed)
       add_linear_solver(r, elastic_solve_timed, summary);
-    if (r.reduction)
+    if (r.solve.reduction)
       summary.add("self_equilibrated_stresses",
-                  r.reduction->n_self_equilibrated());
+                  r.solve.reduction->n_self_equilibrated());
     summary.add("contact_constraints",
                 r.contact ? r.contact->p.size() : std::size_t(0));
     summary.add("iterations", r.contact ? r.contact->history.size() : 0);
@@ -42,7 +42,7 @@ namespace hrcontact
                                      const bool          elastic_solve_timed,
                                      Summary            &summary)
   {
-    const LinearSolverStatistics &s = r.linear_statistics;
+    const LinearSolverStatistics &s = r.solve.linear_statistics;
     summary.add("linear_solver", s.solver);
     summary.add("linear_solves", s.solves);
     summary.add("linear_iterations", s.iterations);
@@ -56,7 +56,8 @@ namespace hrcontact
     summary.add("linear_setup_seconds", s.setup_seconds);
     summary.add("linear_solve_seconds", s.solve_seconds);
     if (elastic_solve_timed)
-      summary.add("linear_elastic_solve_seconds", r.linear_elastic_seconds);
+      summary.add("linear_elastic_solve_seconds",
+                  r.diagnostics.linear_elastic_seconds);
   }
 
   template <int dim>
@@ -65,21 +66,24 @@ namespace hrcontact
   {
     if (!r.scene.all_linear() || r.scene.stress_constraint)
       {
-        summary.add("material_newton_steps", r.material_steps);
+        summary.add("material_newton_steps", r.material.newton_steps);
         summary.add("material_stress_change",
-                    r.material_changes.empty() ? 0. :
-                                                 r.material_changes.back());
+                    r.material.changes.empty() ? 0. :
+                                                 r.material.changes.back());
       }
     if (!r.scene.stress_constraint)
       return;
     summary.add("stress_constraint", r.scene.stress_constraint->name());
-    summary.add("stress_constraint_updates", r.constraint_residuals.size());
+    summary.add("stress_constraint_updates",
+                r.stress_constraint.residuals.size());
     summary.add("stress_constraint_residual",
-                r.constraint_residuals.empty() ? 0. :
-                                                 r.constraint_residuals.back());
+                r.stress_constraint.residuals.empty() ?
+                  0. :
+                  r.stress_constraint.residuals.back());
     summary.add(dim == 2 ? "cracked_area_fraction" : "cracked_volume_fraction",
-                r.cracked_fraction);
-    summary.add("largest_fracture_strain", r.largest_fracture_strain);
+                r.stress_constraint.cracked_fraction);
+    summary.add("largest_fracture_strain",
+                r.stress_constraint.largest_fracture_strain);
   }
 
   template <int dim>

@@ -93,48 +93,52 @@ namespace hrcontact
     // The material iteration's stop: the tolerance, or the round-off floor
     // of the solves (here of the total displacements, near 1e-10 of them).
     std::vector<double> changes{1.};
-    r.displacement_code_steps       = 0;
-    r.displacement_code_local_steps = 0;
+    r.diagnostics.displacement_code_steps       = 0;
+    r.diagnostics.displacement_code_local_steps = 0;
     while (changes.back() > material_iteration.relative_tolerance &&
            !MaterialIteration::at_roundoff(changes,
                                            material_iteration.roundoff_ceiling))
       {
-        if (r.displacement_code_steps >= material_iteration.maximum_steps)
+        if (r.diagnostics.displacement_code_steps >=
+            material_iteration.maximum_steps)
           throw NotConvergedError(
             "Output/Compare with a displacement code: no convergence in " +
             std::to_string(material_iteration.maximum_steps) +
             " Newton steps (Material iteration/Maximum steps).");
-        r.displacement_code_local_steps =
-          std::max(r.displacement_code_local_steps, law.linearise_at(u));
+        r.diagnostics.displacement_code_local_steps =
+          std::max(r.diagnostics.displacement_code_local_steps,
+                   law.linearise_at(u));
         CondensedStep path(r.system, linear_solver, &r.partition, &law);
         path.solve(std::vector<bool>(nq, false),
                    std::vector<double>(nq, 0.),
                    std::vector<double>(nq, 1.),
                    p);
         path.displacements(w, next);
-        ++r.displacement_code_steps;
+        ++r.diagnostics.displacement_code_steps;
         const double scale = next.linfty_norm();
         changes.push_back(scale > 0 ? largest_difference(next, u) / scale : 0.);
-        log << "  displacement code, Newton step " << r.displacement_code_steps
-            << ": displacement change " << std::scientific
-            << std::setprecision(2) << changes.back() << std::defaultfloat
-            << std::setprecision(6) << std::endl;
+        log << "  displacement code, Newton step "
+            << r.diagnostics.displacement_code_steps << ": displacement change "
+            << std::scientific << std::setprecision(2) << changes.back()
+            << std::defaultfloat << std::setprecision(6) << std::endl;
         u.copy_locally_owned_data_from(next);
         if (!is_complete(u))
           u.update_ghost_values();
       }
-    r.displacement_code_seconds = timer.wall_time();
-    r.displacement_code_difference =
+    r.diagnostics.displacement_code_seconds = timer.wall_time();
+    r.diagnostics.displacement_code_difference =
       largest_difference(u, r.displacement) /
       std::max(r.displacement.linfty_norm(), 1e-300);
-    log << "  displacement code: " << r.displacement_code_steps
-        << " Newton steps, at most " << r.displacement_code_local_steps
+    log << "  displacement code: " << r.diagnostics.displacement_code_steps
+        << " Newton steps, at most "
+        << r.diagnostics.displacement_code_local_steps
         << " local steps to invert the law at a Gauss point, "
-        << r.displacement_code_seconds << " s (the stress code's solve "
-        << r.contact_solve_seconds << " s); displacements differ by "
-        << std::scientific << std::setprecision(3)
-        << r.displacement_code_difference << std::defaultfloat
-        << std::setprecision(6) << " of the largest" << std::endl;
+        << r.diagnostics.displacement_code_seconds
+        << " s (the stress code's solve " << r.solve.seconds
+        << " s); displacements differ by " << std::scientific
+        << std::setprecision(3) << r.diagnostics.displacement_code_difference
+        << std::defaultfloat << std::setprecision(6) << " of the largest"
+        << std::endl;
   }
 
   template class DisplacementCodeComparison<2>;

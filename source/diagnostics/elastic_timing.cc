@@ -40,8 +40,8 @@ namespace hrcontact
                           Results<dim>               &r,
                           std::ostream               &log) const
   {
-    r.linear_elastic_seconds = 0;
-    if (!enabled || r.solution_path != SolutionPath::condensed)
+    r.diagnostics.linear_elastic_seconds = 0;
+    if (!enabled || r.solve.path != SolutionPath::condensed)
       return false;
     // A fresh path, so that nothing is reused from it.
     const unsigned int  nq = r.system.contact_rows.size();
@@ -52,9 +52,9 @@ namespace hrcontact
              std::vector<double>(nq, 0.),
              std::vector<double>(nq, 1.),
              p);
-    r.linear_elastic_seconds = timer.wall_time();
+    r.diagnostics.linear_elastic_seconds = timer.wall_time();
     log << "  one linear elastic solve (contact rows held at their gaps): "
-        << r.linear_elastic_seconds << " s" << std::endl;
+        << r.diagnostics.linear_elastic_seconds << " s" << std::endl;
     return true;
   }
 

@@ -63,12 +63,15 @@ namespace hrcontact
                std::vector<double>(nq, 0.),
                std::vector<double>(nq, 1.),
                p);
-    r.floor_seconds    = timer.wall_time();
-    r.floor_iterations = path.statistics.iterations;
-    reinit_field(r.floor_displacement, r.spaces.dof_handler_displacement);
-    path.displacements(system.contact_row_values(), r.floor_displacement);
+    r.diagnostics.floor_seconds    = timer.wall_time();
+    r.diagnostics.floor_iterations = path.statistics.iterations;
+    reinit_field(r.diagnostics.floor_displacement,
+                 r.spaces.dof_handler_displacement);
+    path.displacements(system.contact_row_values(),
+                       r.diagnostics.floor_displacement);
     log << "  Q1 floor (plain displacement solve, CG + AMG): "
-        << r.floor_seconds << " s, " << r.floor_iterations << " CG iterations";
+        << r.diagnostics.floor_seconds << " s, "
+        << r.diagnostics.floor_iterations << " CG iterations";
     if (print_timing)
       log << " (assembly and AMG set-up " << path.statistics.setup_seconds
           << " s, CG " << path.statistics.solve_seconds << " s)";

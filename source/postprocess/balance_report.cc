@@ -69,9 +69,9 @@ namespace hrcontact
           value * row.direction_component(k);
     };
     for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
-      add_reaction(system.contact_rows[k], results.contact_reactions[k]);
+      add_reaction(system.contact_rows[k], results.reactions.contact[k]);
     for (unsigned int k = 0; k < system.prescribed_rows.size(); ++k)
-      add_reaction(system.prescribed_rows[k], results.support_reactions[k]);
+      add_reaction(system.prescribed_rows[k], results.reactions.support[k]);
     double      imbalance = 0;
     const char *xyz       = "xyz";
     for (unsigned int d = 0; d < dim; ++d)
@@ -83,7 +83,7 @@ namespace hrcontact
     summary.add("equilibrium_imbalance",
                 scale > 0 ? imbalance / scale : imbalance);
     double max_p = 0;
-    for (const double p : results.contact_reactions)
+    for (const double p : results.reactions.contact)
       max_p = std::max(max_p, std::abs(p));
     summary.add("max_abs_p_n", max_p);
     if (results.contact)
@@ -95,8 +95,8 @@ namespace hrcontact
         for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
           if (system.rows[system.contact_rows[k]].unilateral)
             {
-              const double p   = results.contact_reactions[k];
-              const double gap = results.contact_w[k] -
+              const double p   = results.reactions.contact[k];
+              const double gap = results.reactions.contact_w[k] -
                                  system.rows[system.contact_rows[k]].value;
               max_p_positive  = std::max(max_p_positive, p);
               max_penetration = std::max(max_penetration, gap);

@@ -98,7 +98,7 @@ namespace hrcontact
         if (!results.contact->released[k] && tributary > 0)
           {
             any_pressed = true;
-            peak = std::max(peak, -results.contact_reactions[k] / tributary);
+            peak = std::max(peak, -results.reactions.contact[k] / tributary);
             // The zone ends halfway to the next open node.
             zone_end =
               point(j)[0] +

@@ -78,12 +78,12 @@ namespace hrcontact
               out << row.direction_component(d) << ",";
             out << row.value << ",";
             for (unsigned int d = 0; d < dim; ++d)
-              out << results.contact_node_displacement[k][d] << ",";
-            out << results.contact_w[k] << ",";
+              out << results.reactions.contact_node_displacement[k][d] << ",";
+            out << results.reactions.contact_w[k] << ",";
             for (unsigned int d = 0; d < dim; ++d)
-              out << results.contact_reactions[k] * row.direction_component(d)
+              out << results.reactions.contact[k] * row.direction_component(d)
                   << ",";
-            out << results.contact_reactions[k] << "," << contact.mu[k] << ","
+            out << results.reactions.contact[k] << "," << contact.mu[k] << ","
                 << contact.alpha[k] << ","
                 << (contact.released[k] ? "open" : "contact") << "\n";
           }
@@ -113,7 +113,7 @@ namespace hrcontact
                 {
                   out << system.node_coordinates[row.node][d] << ",";
                   w += row.combination[d].second *
-                       results.contact_node_displacement[k][d];
+                       results.reactions.contact_node_displacement[k][d];
                 }
               for (unsigned int d = 0; d < dim; ++d)
                 out << row.combination[d].second << ",";
@@ -121,9 +121,9 @@ namespace hrcontact
                   << "," << stop.p0_plus << "," << stop.k_minus << ","
                   << stop.k_plus << "," << w << ",";
               for (unsigned int d = 0; d < dim; ++d)
-                out << results.contact_reactions[k] * row.combination[d].second
+                out << results.reactions.contact[k] * row.combination[d].second
                     << ",";
-              out << results.contact_reactions[k] << "," << contact.mu[k] << ","
+              out << results.reactions.contact[k] << "," << contact.mu[k] << ","
                   << contact.alpha[k] << ","
                   << stop.branch_name(contact.pieces[k].branch) << "\n";
             }

@@ -118,9 +118,9 @@ namespace hrcontact
             << std::setprecision(6) << value;
         // Where cracks open the displacements are not unique (eq. 50-51
         // recover one compatible choice): say so next to such a probe.
-        if (results.constraint_field && probe.quantity[0] == 'u')
+        if (results.stress_constraint.field && probe.quantity[0] == 'u')
           {
-            const auto  &field   = *results.constraint_field;
+            const auto  &field   = *results.stress_constraint.field;
             const double largest = field.largest_opening();
             const bool   cracked =
               largest > 0 && field.opening_at(probe.point) > 1e-2 * largest;

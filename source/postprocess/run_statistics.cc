@@ -13,8 +13,7 @@ namespace hrcontact
                               PostprocessOutput  &output)
   {
     if (results.has_contact)
-      output.summary.add("contact_solve_seconds",
-                         results.contact_solve_seconds);
+      output.summary.add("contact_solve_seconds", results.solve.seconds);
     // Peak resident memory, summed over the processes.
     Utilities::System::MemoryStats stats;
     Utilities::System::get_memory_stats(stats);
@@ -23,33 +22,34 @@ namespace hrcontact
       peak = Utilities::MPI::sum(peak, results.partition.communicator);
     output.summary.add("peak_memory_MB", peak);
     output.summary.add("wall_time", results.wall_time);
-    if (results.displacement_code_steps > 0)
+    if (results.diagnostics.displacement_code_steps > 0)
       {
         output.summary.add("displacement_code_newton_steps",
-                           results.displacement_code_steps);
+                           results.diagnostics.displacement_code_steps);
         output.summary.add("displacement_code_local_steps",
-                           results.displacement_code_local_steps);
+                           results.diagnostics.displacement_code_local_steps);
         output.summary.add("displacement_code_seconds",
-                           results.displacement_code_seconds);
-        output.summary.add("stress_code_seconds",
-                           results.contact_solve_seconds);
+                           results.diagnostics.displacement_code_seconds);
+        output.summary.add("stress_code_seconds", results.solve.seconds);
         output.summary.add("displacement_code_to_solve",
-                           results.displacement_code_seconds /
-                             results.contact_solve_seconds);
+                           results.diagnostics.displacement_code_seconds /
+                             results.solve.seconds);
         output.summary.add("displacement_code_difference",
-                           results.displacement_code_difference);
+                           results.diagnostics.displacement_code_difference);
       }
-    if (results.floor_displacement.size() > 0)
+    if (results.diagnostics.floor_displacement.size() > 0)
       {
-        output.summary.add("q1_floor_seconds", results.floor_seconds);
-        output.summary.add("q1_floor_cg_iterations", results.floor_iterations);
+        output.summary.add("q1_floor_seconds",
+                           results.diagnostics.floor_seconds);
+        output.summary.add("q1_floor_cg_iterations",
+                           results.diagnostics.floor_iterations);
         output.summary.add("contact_solve_to_floor",
-                           results.contact_solve_seconds /
-                             results.floor_seconds);
-        if (results.linear_elastic_seconds > 0)
+                           results.solve.seconds /
+                             results.diagnostics.floor_seconds);
+        if (results.diagnostics.linear_elastic_seconds > 0)
           output.summary.add("elastic_solve_to_floor",
-                             results.linear_elastic_seconds /
-                               results.floor_seconds);
+                             results.diagnostics.linear_elastic_seconds /
+                               results.diagnostics.floor_seconds);
       }
   }
 

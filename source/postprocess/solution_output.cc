@@ -171,9 +171,9 @@ namespace hrcontact
       // A stress constraint: the largest fracture (crack-opening) strain of
       // each cell's constraint points, per cell.
       Vector<float> fracture;
-      if (results.constraint_field)
+      if (results.stress_constraint.field)
         {
-          fracture = results.constraint_field->cell_openings();
+          fracture = results.stress_constraint.field->cell_openings();
           data_out.add_data_vector(fracture, "fracture_strain");
         }
       data_out.build_patches();

@@ -197,7 +197,7 @@ namespace hrcontact
               0.5 * ((j > 0 ? point(j).distance(point(j - 1)) : 0.) +
                      (j + 1 < nc ? point(j).distance(point(j + 1)) : 0.));
             pressure[j] =
-              -results.contact_reactions[along[j].second] / tributary;
+              -results.reactions.contact[along[j].second] / tributary;
             if (pressure[j] > peak)
               {
                 peak   = pressure[j];
@@ -256,8 +256,8 @@ namespace hrcontact
                     << row.combination[1].second << ","
                     << results.displacement[row.combination[0].first] << ","
                     << results.displacement[row.combination[1].first] << ","
-                    << results.contact_w[k] << "," << row.value << ","
-                    << results.contact_reactions[k] << "," << pressure[j] << ","
+                    << results.reactions.contact_w[k] << "," << row.value << ","
+                    << results.reactions.contact[k] << "," << pressure[j] << ","
                     << (results.contact->released[k] ? "open" : "contact")
                     << "\n";
               }

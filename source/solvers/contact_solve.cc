@@ -43,7 +43,7 @@ namespace hrcontact
                  p);
     };
     material_loop.run(system, path, linear_solve, r, log);
-    r.contact_w = system.contact_row_values();
+    r.reactions.contact_w = system.contact_row_values();
   }
 
   template <int dim>
@@ -90,7 +90,7 @@ namespace hrcontact
                          std::ostream      &log)
   {
     r.contact = nullptr;
-    r.contact_w.assign(system.contact_rows.size(), 0.);
+    r.reactions.contact_w.assign(system.contact_rows.size(), 0.);
     if (!r.has_contact)
       {
         TimerOutput::Scope t(timer, "solve");
@@ -138,9 +138,9 @@ namespace hrcontact
     material_loop.run(system, path, contact_solve, r, log);
     r.contact = &contact_solver.result();
     // After the last multiplier update mu = w_n - g (pressed: mu = 0).
-    r.contact_w = system.contact_row_values();
-    for (unsigned int k = 0; k < r.contact_w.size(); ++k)
-      r.contact_w[k] += r.contact->opening[k];
+    r.reactions.contact_w = system.contact_row_values();
+    for (unsigned int k = 0; k < r.reactions.contact_w.size(); ++k)
+      r.reactions.contact_w[k] += r.contact->opening[k];
   }
 
   template class ContactSolve<2>;

@@ -16,25 +16,25 @@ namespace hrcontact
     reinit_field(r.stress, r.spaces.dof_handler_stress);
     r.spaces.expand(unknowns, r.stress);
     reinit_field(r.displacement, r.spaces.dof_handler_displacement);
-    path.displacements(r.contact_w, r.displacement);
+    path.displacements(r.reactions.contact_w, r.displacement);
     // The Q rows first: a pair row's reaction enters its master rows'.
     row_reactions(r.system,
                   r.partition,
                   unknowns,
                   r.system.contact_rows,
-                  r.contact_reactions,
-                  r.contact_reactions);
+                  r.reactions.contact,
+                  r.reactions.contact);
     row_reactions(r.system,
                   r.partition,
                   unknowns,
                   r.system.prescribed_rows,
-                  r.contact_reactions,
-                  r.support_reactions);
+                  r.reactions.contact,
+                  r.reactions.support);
     if (r.spaces.has_parameters())
       r.stress_parameters.swap(unknowns);
     else
       r.stress_parameters.reinit(0);
-    r.contact_node_displacement =
+    r.reactions.contact_node_displacement =
       contact_node_displacements(r.system, r.partition, r.displacement);
   }
 

@@ -39,11 +39,11 @@ namespace hrcontact
                          Results<dim>                &r,
                          std::ostream                &log)
   {
-    r.material_steps = 0;
-    r.material_changes.clear();
-    r.constraint_residuals.clear();
-    r.constraint_inner_steps.clear();
-    r.constraint_field = nullptr;
+    r.material.newton_steps = 0;
+    r.material.changes.clear();
+    r.stress_constraint.residuals.clear();
+    r.stress_constraint.inner_steps.clear();
+    r.stress_constraint.field = nullptr;
     if (!iterates(r.scene))
       {
         solve_once();
@@ -69,8 +69,8 @@ namespace hrcontact
       path.flexibility_changed();
     };
     solve_material_iteration(operations, r, log);
-    log << "  material iteration: " << r.material_steps << " Newton steps"
-        << std::endl;
+    log << "  material iteration: " << r.material.newton_steps
+        << " Newton steps" << std::endl;
   }
 
   template <int dim>
@@ -81,8 +81,8 @@ namespace hrcontact
     std::ostream                        &log)
   {
     material_iteration.solve(operations, log);
-    r.material_steps += material_iteration.n_steps();
-    r.material_changes.insert(r.material_changes.end(),
+    r.material.newton_steps += material_iteration.n_steps();
+    r.material.changes.insert(r.material.changes.end(),
                               material_iteration.change_history().begin(),
                               material_iteration.change_history().end());
   }
@@ -154,15 +154,16 @@ namespace hrcontact
     constraint_iteration.solve(c,
                                elastic ? 1. / elastic->youngs_modulus() : 1.,
                                log);
-    r.constraint_residuals    = constraint_iteration.residual_history();
-    r.constraint_inner_steps  = constraint_iteration.inner_step_history();
-    r.cracked_fraction        = constraint_field->cracked_fraction();
-    r.largest_fracture_strain = constraint_field->largest_opening();
-    r.constraint_field        = constraint_field.get();
-    log << "  stress constraint: " << r.constraint_residuals.size()
-        << " multiplier updates, " << r.material_steps
-        << " material Newton steps, cracked fraction " << r.cracked_fraction
-        << std::endl;
+    r.stress_constraint.residuals   = constraint_iteration.residual_history();
+    r.stress_constraint.inner_steps = constraint_iteration.inner_step_history();
+    r.stress_constraint.cracked_fraction = constraint_field->cracked_fraction();
+    r.stress_constraint.largest_fracture_strain =
+      constraint_field->largest_opening();
+    r.stress_constraint.field = constraint_field.get();
+    log << "  stress constraint: " << r.stress_constraint.residuals.size()
+        << " multiplier updates, " << r.material.newton_steps
+        << " material Newton steps, cracked fraction "
+        << r.stress_constraint.cracked_fraction << std::endl;
   }
 
   template class MaterialLoop<2>;

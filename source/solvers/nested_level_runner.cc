@@ -141,7 +141,7 @@ namespace hrcontact
         level.updates      = c.contact->history.size();
         level.newton_steps = c.contact->total_newton_steps;
       }
-    level.linear_solves = c.linear_statistics.solves;
+    level.linear_solves = c.solve.linear_statistics.solves;
     level.converged     = solved;
     // Its own time: the coarser levels it solved first report theirs.
     level.seconds = timer.wall_time();

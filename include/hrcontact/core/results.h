@@ -28,9 +28,11 @@ namespace hrcontact
   /**
    * What a run leaves behind, read-only for postprocessors and tests
    * (HRProblem::results()): the scene and spaces it solved on, the rows of
-   * the equilibrium system (eq. 38), the fields, the reactions, the contact
-   * iteration's table and history, and the summary. Postprocessors add to
-   * the summary only; nothing here is changed after the solve.
+   * the equilibrium system (eq. 38), the fields, and per stage what it
+   * produced: the reactions, the solve on its path, the contact iteration's
+   * table and history, the nested levels, the material and stress
+   * constraint iterations, the diagnostics; and the summary. Postprocessors add
+   * to the summary only; nothing here is changed after the solve.
    */
   template <int dim>
   struct Results
@@ -82,13 +84,20 @@ namespace hrcontact
      * distributed mesh the owned and ghost (locally relevant) dofs; complete
      * on a serial mesh. */
     FieldVector displacement;
-    /** The displacement of the node of each Q row (its first dim dofs'
-     * components, complete on every process: contact.csv). */
-    std::vector<std::array<double, 3>> contact_node_displacement;
-    /** Normal displacement w_n per Q row (g + mu after the last update). */
-    std::vector<double> contact_w;
-    /** p = Q s - q per Q row; r = H s - f_H per prescribed (H) row. */
-    std::vector<double> contact_reactions, support_reactions;
+    /** What recover_fields and row_reactions leave: the reactions of the
+     * rows and the contact nodes' displacements. */
+    struct Reactions
+    {
+      /** The displacement of the node of each Q row (its first dim dofs'
+       * components, complete on every process: contact.csv). */
+      std::vector<std::array<double, 3>> contact_node_displacement;
+      /** Normal displacement w_n per Q row (g + mu after the last
+       * update). */
+      std::vector<double> contact_w;
+      /** p = Q s - q per Q row; r = H s - f_H per prescribed (H) row. */
+      std::vector<double> contact, support;
+    };
+    Reactions reactions;
 
     /** True when the scene has unilateral contact or constraint laws. */
     bool has_contact = false;
@@ -104,44 +113,52 @@ namespace hrcontact
       return !contact || contact->converged();
     }
 
-    /** The mesh's largest cell aspect ratio (largest_cell_aspect_ratio); it
-     * selects the AMG aggregation (Linear solver/AMG aggregation =
-     * automatic). */
-    double largest_aspect_ratio = 1;
-    /** The path the run took. */
-    SolutionPath solution_path = SolutionPath::null_space;
-    /** The dense reduction (null-space path only, else null). */
-    const EquilibriumReduction *reduction = nullptr;
-    /** Counters of the condensed path's linear solves (zero otherwise). */
-    LinearSolverStatistics linear_statistics;
-    /**
-     * Wall time of building the Newton-step path and the contact iteration
-     * (or the one solve without contact), and of one linear elastic solve
-     * when Output/Time a linear elastic solve is set.
-     */
-    double contact_solve_seconds = 0, linear_elastic_seconds = 0;
-    /**
-     * Output/Time the Q1 floor: wall time and CG iterations of the plain Q1
-     * displacement solve of the same mesh and supports, and its
-     * displacements (empty when not timed).
-     */
-    double       floor_seconds    = 0;
-    unsigned int floor_iterations = 0;
-    FieldVector  floor_displacement;
-    /**
-     * Output/Compare with a displacement code: its Newton steps, the
-     * largest number of local steps a Gauss point's inversion of the law
-     * took, its wall time, and max |u_displacement code - u| / max |u|
-     * (steps 0 when not compared).
-     */
-    unsigned int displacement_code_steps       = 0;
-    unsigned int displacement_code_local_steps = 0;
-    double       displacement_code_seconds     = 0;
-    double       displacement_code_difference  = 0;
+    /** The solve on its path (PathChoice, ContactSolve). */
+    struct Solve
+    {
+      /** The path the run took. */
+      SolutionPath path = SolutionPath::null_space;
+      /** The dense reduction (null-space path only, else null). */
+      const EquilibriumReduction *reduction = nullptr;
+      /** Counters of the condensed path's linear solves (zero
+       * otherwise). */
+      LinearSolverStatistics linear_statistics;
+      /** The mesh's largest cell aspect ratio (largest_cell_aspect_ratio);
+       * it selects the AMG aggregation (Linear solver/AMG aggregation =
+       * automatic). */
+      double largest_aspect_ratio = 1;
+      /** Wall time of building the Newton-step path and the contact
+       * iteration (or the one solve without contact). */
+      double seconds = 0;
+    };
+    Solve solve;
+    /** The diagnostics a scene asks for under Output/ (diagnostics/). */
+    struct Diagnostics
+    {
+      /** Output/Time the Q1 floor (Q1Floor): wall time and CG iterations of
+       * the plain Q1 displacement solve of the same mesh and supports, and
+       * its displacements (empty when not timed). */
+      double       floor_seconds    = 0;
+      unsigned int floor_iterations = 0;
+      FieldVector  floor_displacement;
+      /** Output/Time a linear elastic solve (ElasticTiming). */
+      double linear_elastic_seconds = 0;
+      /**
+       * Output/Compare with a displacement code (DisplacementCodeComparison):
+       * its Newton steps, the largest number of local steps a Gauss point's
+       * inversion of the law took, its wall time, and max |u_displacement
+       * code - u| / max |u| (steps 0 when not compared).
+       */
+      unsigned int displacement_code_steps       = 0;
+      unsigned int displacement_code_local_steps = 0;
+      double       displacement_code_seconds     = 0;
+      double       displacement_code_difference  = 0;
+    };
+    Diagnostics diagnostics;
     /**
      * The coarser levels the nested iteration solved first (coarsest
      * first; empty without nested iteration). Their time is part of
-     * contact_solve_seconds.
+     * solve.seconds.
      */
     struct CoarseLevel
     {
@@ -153,13 +170,15 @@ namespace hrcontact
       double seconds = 0;
     };
     std::vector<CoarseLevel> coarse_levels;
-    /**
-     * A nonlinear material law (MaterialIteration): the Newton steps it
+    /** A nonlinear material law (MaterialIteration): the Newton steps it
      * took, each one linear solve, and the relative stress change after
-     * each step but the first (empty for a linear law).
-     */
-    unsigned int        material_steps = 0;
-    std::vector<double> material_changes;
+     * each step but the first (empty for a linear law). */
+    struct Material
+    {
+      unsigned int        newton_steps = 0;
+      std::vector<double> changes;
+    };
+    Material material;
     /**
      * A stress constraint (Material/Admissible stresses,
      * StressConstraintIteration): the multiplier updates, the relative
@@ -167,11 +186,15 @@ namespace hrcontact
      * the area (volume) fraction of cracked constraint points, the largest
      * fracture strain, and the state itself (for output), null without one.
      */
-    std::vector<double>               constraint_residuals;
-    std::vector<unsigned int>         constraint_inner_steps;
-    double                            cracked_fraction        = 0;
-    double                            largest_fracture_strain = 0;
-    const StressConstraintField<dim> *constraint_field        = nullptr;
+    struct StressConstraintState
+    {
+      std::vector<double>               residuals;
+      std::vector<unsigned int>         inner_steps;
+      double                            cracked_fraction        = 0;
+      double                            largest_fracture_strain = 0;
+      const StressConstraintField<dim> *field                   = nullptr;
+    };
+    StressConstraintState stress_constraint;
     /** Wall time of the run's sections so far (for summary.txt). */
     double wall_time = 0;
 
