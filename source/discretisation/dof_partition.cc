@@ -60,6 +60,63 @@ namespace hrcontact
     return partition;
   }
 
+  namespace
+  {
+    /** A parallel::distributed::Triangulation's own ownership, cell by cell
+     * (indices of this process's active cells, artificial ones included
+     * and not owned). */
+    template <int dim>
+    DofPartition
+    partition_of_distributed_mesh(const Triangulation<dim> &triangulation,
+                                  const DoFHandler<dim>    &dof_handler,
+                                  const MPI_Comm            communicator,
+                                  const unsigned int        n_processes)
+    {
+      DofPartition partition;
+      partition.communicator = communicator;
+      partition.n_processes  = n_processes;
+      partition.process      = Utilities::MPI::this_mpi_process(communicator);
+      partition.distributed_mesh = true;
+      partition.owned            = dof_handler.locally_owned_dofs();
+      DoFTools::extract_locally_relevant_dofs(dof_handler, partition.relevant);
+      partition.owned_cell.assign(triangulation.n_active_cells(), false);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        partition.owned_cell[cell->active_cell_index()] =
+          cell->is_locally_owned();
+      return partition;
+    }
+
+    /** The cell of the serial mesh a forest cell is: the coarse cell by its
+     * deal.II index (p4est numbers its trees differently), then the child
+     * path. */
+    template <int dim>
+    typename DoFHandler<dim>::active_cell_iterator
+    same_cell_of_serial_mesh(
+      const typename DoFHandler<dim>::active_cell_iterator &forest_cell,
+      const Triangulation<dim>                             &triangulation,
+      const DoFHandler<dim>                                &dof_handler)
+    {
+      std::vector<unsigned int>                  path;
+      typename Triangulation<dim>::cell_iterator ancestor = forest_cell;
+      while (ancestor->level() > 0)
+        {
+          const auto parent = ancestor->parent();
+          path.push_back(parent->child_iterator_to_index(ancestor));
+          ancestor = parent;
+        }
+      typename Triangulation<dim>::cell_iterator serial(&triangulation,
+                                                        0,
+                                                        ancestor->index());
+      for (auto child = path.rbegin(); child != path.rend(); ++child)
+        serial = serial->child(*child);
+      AssertThrow(serial->is_active(), ExcInternalError());
+      return typename DoFHandler<dim>::active_cell_iterator(&triangulation,
+                                                            serial->level(),
+                                                            serial->index(),
+                                                            &dof_handler);
+    }
+  } // namespace
+
   template <int dim>
   DofPartition
   partition_with_p4est(const Triangulation<dim> &triangulation,
@@ -75,25 +132,13 @@ namespace hrcontact
       return serial_partition(dof_handler.n_dofs(),
                               triangulation.n_active_cells());
 
-    // A distributed mesh: its own ownership, cell by cell (indices of this
-    // process's active cells, artificial ones included and not owned).
+    // A distributed mesh: its own ownership.
     if (dynamic_cast<const parallel::distributed::Triangulation<dim> *>(
           &triangulation))
-      {
-        DofPartition partition;
-        partition.communicator = communicator;
-        partition.n_processes  = n_processes;
-        partition.process      = Utilities::MPI::this_mpi_process(communicator);
-        partition.distributed_mesh = true;
-        partition.owned            = dof_handler.locally_owned_dofs();
-        DoFTools::extract_locally_relevant_dofs(dof_handler,
-                                                partition.relevant);
-        partition.owned_cell.assign(triangulation.n_active_cells(), false);
-        for (const auto &cell : triangulation.active_cell_iterators())
-          partition.owned_cell[cell->active_cell_index()] =
-            cell->is_locally_owned();
-        return partition;
-      }
+      return partition_of_distributed_mesh(triangulation,
+                                           dof_handler,
+                                           communicator,
+                                           n_processes);
 
     const unsigned int finest = triangulation.n_levels() - 1;
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -135,24 +180,8 @@ namespace hrcontact
       {
         if (forest_cell->is_artificial())
           continue;
-        // The same cell of the serial mesh: the coarse cell by its deal.II
-        // index (p4est numbers its trees differently), then the child path.
-        std::vector<unsigned int>                  path;
-        typename Triangulation<dim>::cell_iterator ancestor = forest_cell;
-        while (ancestor->level() > 0)
-          {
-            const auto parent = ancestor->parent();
-            path.push_back(parent->child_iterator_to_index(ancestor));
-            ancestor = parent;
-          }
-        typename Triangulation<dim>::cell_iterator serial(&triangulation,
-                                                          0,
-                                                          ancestor->index());
-        for (auto child = path.rbegin(); child != path.rend(); ++child)
-          serial = serial->child(*child);
-        AssertThrow(serial->is_active(), ExcInternalError());
-        const typename DoFHandler<dim>::active_cell_iterator cell(
-          &triangulation, serial->level(), serial->index(), &dof_handler);
+        const auto cell =
+          same_cell_of_serial_mesh(forest_cell, triangulation, dof_handler);
         forest_cell->get_dof_indices(forest_cell_dofs);
         cell->get_dof_indices(cell_dofs);
         for (unsigned int i = 0; i < n; ++i)

@@ -55,6 +55,63 @@ namespace hrcontact
       }
   }
 
+  namespace
+  {
+    /** The cells touching the node of a Q or H row (a lean system stores
+     * only their blocks). */
+    template <int dim>
+    void
+    mark_stored_cells(EquilibriumSystem &system, const DoFHandler<dim> &dh_u)
+    {
+      std::vector<bool> constrained(dh_u.n_dofs(), false);
+      for (const auto &row : system.rows)
+        if (row.row_class != RowClass::free)
+          for (const auto &[dof, c] : row.combination)
+            constrained[dof] = true;
+      system.stored_cell.assign(dh_u.get_triangulation().n_active_cells(),
+                                false);
+      std::vector<types::global_dof_index> du;
+      for (const auto &cu : dh_u.active_cell_iterators())
+        if (!cu->is_artificial())
+          {
+            du.resize(cu->get_fe().n_dofs_per_cell());
+            cu->get_dof_indices(du);
+            for (const auto i : du)
+              if (constrained[i])
+                system.stored_cell[cu->active_cell_index()] = true;
+          }
+    }
+
+    /** B's sparsity from the stored cells' dofs (rows b_row(dof)). */
+    template <int dim>
+    void
+    build_b_sparsity(EquilibriumSystem &system, const MixedSpaces<dim> &spaces)
+    {
+      const DoFHandler<dim> &dh_u = spaces.dof_handler_displacement;
+      DynamicSparsityPattern dsp(system.B_dofs.size() == 0 ?
+                                   dh_u.n_dofs() :
+                                   system.B_dofs.n_elements(),
+                                 system.n_stress_dofs);
+      std::vector<types::global_dof_index> du, ds;
+      auto cs = spaces.stress_unknowns().begin_active();
+      for (const auto &cu : dh_u.active_cell_iterators())
+        {
+          if (!cu->is_artificial() && system.is_stored(cu->active_cell_index()))
+            {
+              du.resize(cu->get_fe().n_dofs_per_cell());
+              ds.resize(cs->get_fe().n_dofs_per_cell());
+              cu->get_dof_indices(du);
+              cs->get_dof_indices(ds);
+              for (const auto i : du)
+                for (const auto j : ds)
+                  dsp.add(system.b_row(i), j);
+            }
+          ++cs;
+        }
+      system.sparsity.copy_from(dsp);
+    }
+  } // namespace
+
   template <int dim>
   void
   HRAssembler<dim>::assemble_blocks(EquilibriumSystem  &system,
@@ -69,24 +126,7 @@ namespace hrcontact
     // The stored cells: all, or those touching a Q or H row's node.
     system.stored_cell.clear();
     if (lean)
-      {
-        std::vector<bool> constrained(dh_u.n_dofs(), false);
-        for (const auto &row : system.rows)
-          if (row.row_class != RowClass::free)
-            for (const auto &[dof, c] : row.combination)
-              constrained[dof] = true;
-        system.stored_cell.assign(n_cells, false);
-        std::vector<types::global_dof_index> du;
-        for (const auto &cu : dh_u.active_cell_iterators())
-          if (!cu->is_artificial())
-            {
-              du.resize(cu->get_fe().n_dofs_per_cell());
-              cu->get_dof_indices(du);
-              for (const auto i : du)
-                if (constrained[i])
-                  system.stored_cell[cu->active_cell_index()] = true;
-            }
-      }
+      mark_stored_cells(system, dh_u);
     auto stored = [&](const unsigned int c) { return system.is_stored(c); };
     auto owned  = [&](const unsigned int c) {
       return !lean || lean->owned_cell[c];
@@ -96,29 +136,7 @@ namespace hrcontact
     system.B_dofs = IndexSet();
     if (lean && lean->distributed_mesh)
       system.B_dofs = lean->relevant;
-    {
-      DynamicSparsityPattern dsp(system.B_dofs.size() == 0 ?
-                                   dh_u.n_dofs() :
-                                   system.B_dofs.n_elements(),
-                                 system.n_stress_dofs);
-      std::vector<types::global_dof_index> du, ds;
-      auto cs = spaces.stress_unknowns().begin_active();
-      for (const auto &cu : dh_u.active_cell_iterators())
-        {
-          if (!cu->is_artificial() && stored(cu->active_cell_index()))
-            {
-              du.resize(cu->get_fe().n_dofs_per_cell());
-              ds.resize(cs->get_fe().n_dofs_per_cell());
-              cu->get_dof_indices(du);
-              cs->get_dof_indices(ds);
-              for (const auto i : du)
-                for (const auto j : ds)
-                  dsp.add(system.b_row(i), j);
-            }
-          ++cs;
-        }
-      system.sparsity.copy_from(dsp);
-    }
+    build_b_sparsity(system, spaces);
     system.B.reinit(system.sparsity);
     // f: on a distributed mesh the owned and ghost dofs of this process,
     // else complete (summed over the processes below).

@@ -10,6 +10,84 @@ namespace hrcontact
 {
   using namespace dealii;
 
+  namespace
+  {
+    /** Two-sided stops: which node sits on which branch of its law. */
+    template <int dim>
+    void
+    report_stop_branches(const Results<dim> &results, Summary &summary)
+    {
+      const EquilibriumSystem &system  = results.system;
+      const ContactIteration  &contact = *results.contact;
+      std::map<unsigned int, std::pair<unsigned int, std::string>> branches;
+      bool                                                         any = false;
+      for (const unsigned int k : sorted_stop_rows(system))
+        {
+          any = true;
+          const auto &c =
+            system.node_coordinates[system.rows[system.contact_rows[k]].node];
+          auto              &entry = branches[contact.pieces[k].branch];
+          std::ostringstream where;
+          where << std::setprecision(6) << " (" << c[0];
+          for (unsigned int d = 1; d < dim; ++d)
+            where << ", " << c[d];
+          where << ")";
+          ++entry.first;
+          entry.second += where.str();
+        }
+      if (any)
+        {
+          const char *keys[5] = {"stops_free",
+                                 "stops_at_upper_stop",
+                                 "stops_beyond_upper",
+                                 "stops_at_lower_stop",
+                                 "stops_beyond_lower"};
+          for (unsigned int b = 0; b < 5; ++b)
+            {
+              const auto it = branches.find(b);
+              summary.add(keys[b],
+                          it == branches.end() ?
+                            std::string("0") :
+                            std::to_string(it->second.first) + " at" +
+                              it->second.second);
+            }
+        }
+    }
+
+    /** The Signorini conditions on the unilateral rows (eq. 12) and the
+     * stops' branches. */
+    template <int dim>
+    void
+    report_contact_conditions(const Results<dim> &results, Summary &summary)
+    {
+      const EquilibriumSystem &system  = results.system;
+      const ContactIteration  &contact = *results.contact;
+      // Signorini conditions on the unilateral rows (eq. 12).
+      double max_p_positive = 0, max_penetration = 0, max_complementarity = 0;
+      unsigned int pressed = 0;
+      for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
+        if (system.rows[system.contact_rows[k]].unilateral)
+          {
+            const double p   = results.reactions.contact[k];
+            const double gap = results.reactions.contact_w[k] -
+                               system.rows[system.contact_rows[k]].value;
+            max_p_positive  = std::max(max_p_positive, p);
+            max_penetration = std::max(max_penetration, gap);
+            max_complementarity =
+              std::max(max_complementarity, std::abs(p * gap));
+            pressed += !contact.released[k];
+          }
+      summary.add("pressed_constraints", pressed);
+      summary.add("final_norm_pbar", contact.final_norm_pbar);
+      summary.add("tolerance", contact.tolerance_used);
+      summary.add("max_positive_p_n", max_p_positive);
+      summary.add("max_penetration", max_penetration);
+      summary.add("max_complementarity", max_complementarity);
+
+      report_stop_branches(results, summary);
+    }
+  } // namespace
+
   template <int dim>
   void
   BalanceReport<dim>::execute(const Results<dim> &results,
@@ -87,65 +165,7 @@ namespace hrcontact
       max_p = std::max(max_p, std::abs(p));
     summary.add("max_abs_p_n", max_p);
     if (results.contact)
-      {
-        const ContactIteration &contact = *results.contact;
-        // Signorini conditions on the unilateral rows (eq. 12).
-        double max_p_positive = 0, max_penetration = 0, max_complementarity = 0;
-        unsigned int pressed = 0;
-        for (unsigned int k = 0; k < system.contact_rows.size(); ++k)
-          if (system.rows[system.contact_rows[k]].unilateral)
-            {
-              const double p   = results.reactions.contact[k];
-              const double gap = results.reactions.contact_w[k] -
-                                 system.rows[system.contact_rows[k]].value;
-              max_p_positive  = std::max(max_p_positive, p);
-              max_penetration = std::max(max_penetration, gap);
-              max_complementarity =
-                std::max(max_complementarity, std::abs(p * gap));
-              pressed += !contact.released[k];
-            }
-        summary.add("pressed_constraints", pressed);
-        summary.add("final_norm_pbar", contact.final_norm_pbar);
-        summary.add("tolerance", contact.tolerance_used);
-        summary.add("max_positive_p_n", max_p_positive);
-        summary.add("max_penetration", max_penetration);
-        summary.add("max_complementarity", max_complementarity);
-
-        // Two-sided stops: which node sits on which branch of its law.
-        std::map<unsigned int, std::pair<unsigned int, std::string>> branches;
-        bool any = false;
-        for (const unsigned int k : sorted_stop_rows(system))
-          {
-            any = true;
-            const auto &c =
-              system.node_coordinates[system.rows[system.contact_rows[k]].node];
-            auto              &entry = branches[contact.pieces[k].branch];
-            std::ostringstream where;
-            where << std::setprecision(6) << " (" << c[0];
-            for (unsigned int d = 1; d < dim; ++d)
-              where << ", " << c[d];
-            where << ")";
-            ++entry.first;
-            entry.second += where.str();
-          }
-        if (any)
-          {
-            const char *keys[5] = {"stops_free",
-                                   "stops_at_upper_stop",
-                                   "stops_beyond_upper",
-                                   "stops_at_lower_stop",
-                                   "stops_beyond_lower"};
-            for (unsigned int b = 0; b < 5; ++b)
-              {
-                const auto it = branches.find(b);
-                summary.add(keys[b],
-                            it == branches.end() ?
-                              std::string("0") :
-                              std::to_string(it->second.first) + " at" +
-                                it->second.second);
-              }
-          }
-      }
+      report_contact_conditions(results, summary);
     // Over the processes on a distributed mesh.
     const double max_u = results.displacement.linfty_norm();
     summary.add("max_abs_displacement_component", max_u);
