@@ -61,6 +61,64 @@ namespace hrcontact
       DoFHandler<2>::active_cell_iterator cell;
     };
 
+    /**
+     * The pieces of the line P + xi nu in each (convex) cell it crosses,
+     * sorted by xi; @p length_scale: the largest such cell's diameter.
+     */
+    std::vector<Piece>
+    pieces_along_line(const MixedSpaces<2> &spaces,
+                      const Point<2>       &P,
+                      const Tensor<1, 2>   &nu,
+                      double               &length_scale)
+    {
+      const Tensor<1, 2> tau({nu[1], -nu[0]});
+      std::vector<Piece> pieces;
+      for (const auto &cell : spaces.dof_handler_stress.active_cell_iterators())
+        {
+          static constexpr unsigned int order[4] = {0, 1, 3, 2};
+          const double                  h        = cell->diameter();
+          double                        d[4], d_min = 0, d_max = 0;
+          for (unsigned int k = 0; k < 4; ++k)
+            {
+              d[k] = (cell->vertex(order[k]) - P) * tau;
+              if (std::abs(d[k]) < 1e-12 * h)
+                d[k] = 0; // the line runs through this vertex
+              d_min = (k == 0) ? d[k] : std::min(d_min, d[k]);
+              d_max = (k == 0) ? d[k] : std::max(d_max, d[k]);
+            }
+          if (d_min > 0 || d_max < 0)
+            continue;
+          double lo = std::numeric_limits<double>::max(),
+                 hi = -std::numeric_limits<double>::max();
+          for (unsigned int k = 0; k < 4; ++k)
+            {
+              const Point<2> &a  = cell->vertex(order[k]);
+              const Point<2> &b  = cell->vertex(order[(k + 1) % 4]);
+              const double    da = d[k], db = d[(k + 1) % 4];
+              auto            take = [&](const Point<2> &x) {
+                const double xi = (x - P) * nu;
+                lo              = std::min(lo, xi);
+                hi              = std::max(hi, xi);
+              };
+              if (da == 0)
+                take(a);
+              if ((da < 0 && db > 0) || (da > 0 && db < 0))
+                take(a + (da / (da - db)) * (b - a));
+            }
+          if (hi - lo > 1e-10 * h)
+            {
+              pieces.push_back({lo, hi, cell});
+              length_scale = std::max(length_scale, h);
+            }
+        }
+      std::sort(pieces.begin(),
+                pieces.end(),
+                [](const Piece &a, const Piece &b) {
+                  return a.start < b.start;
+                });
+      return pieces;
+    }
+
     std::vector<SectionForce>
     section_forces_2d(const MixedSpaces<2>              &spaces,
                       const FieldVector                 &stress,
@@ -79,52 +137,9 @@ namespace hrcontact
           const Point<2>    &P = station.point;
 
           // Clip the line P + xi nu against each (convex) cell.
-          std::vector<Piece> pieces;
-          double             length_scale = 0;
-          for (const auto &cell :
-               spaces.dof_handler_stress.active_cell_iterators())
-            {
-              static constexpr unsigned int order[4] = {0, 1, 3, 2};
-              const double                  h        = cell->diameter();
-              double                        d[4], d_min = 0, d_max = 0;
-              for (unsigned int k = 0; k < 4; ++k)
-                {
-                  d[k] = (cell->vertex(order[k]) - P) * tau;
-                  if (std::abs(d[k]) < 1e-12 * h)
-                    d[k] = 0; // the line runs through this vertex
-                  d_min = (k == 0) ? d[k] : std::min(d_min, d[k]);
-                  d_max = (k == 0) ? d[k] : std::max(d_max, d[k]);
-                }
-              if (d_min > 0 || d_max < 0)
-                continue;
-              double lo = std::numeric_limits<double>::max(),
-                     hi = -std::numeric_limits<double>::max();
-              for (unsigned int k = 0; k < 4; ++k)
-                {
-                  const Point<2> &a  = cell->vertex(order[k]);
-                  const Point<2> &b  = cell->vertex(order[(k + 1) % 4]);
-                  const double    da = d[k], db = d[(k + 1) % 4];
-                  auto            take = [&](const Point<2> &x) {
-                    const double xi = (x - P) * nu;
-                    lo              = std::min(lo, xi);
-                    hi              = std::max(hi, xi);
-                  };
-                  if (da == 0)
-                    take(a);
-                  if ((da < 0 && db > 0) || (da > 0 && db < 0))
-                    take(a + (da / (da - db)) * (b - a));
-                }
-              if (hi - lo > 1e-10 * h)
-                {
-                  pieces.push_back({lo, hi, cell});
-                  length_scale = std::max(length_scale, h);
-                }
-            }
-          std::sort(pieces.begin(),
-                    pieces.end(),
-                    [](const Piece &a, const Piece &b) {
-                      return a.start < b.start;
-                    });
+          double                   length_scale = 0;
+          const std::vector<Piece> pieces =
+            pieces_along_line(spaces, P, nu, length_scale);
           // The connected run of pieces that contains xi = 0.
           const double tol   = 1e-9 * length_scale;
           int          first = -1;

@@ -114,6 +114,97 @@ namespace hrcontact
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    /** C^T of the free rows, tau x n, column-major (column i is free row i
+     * of B~), and the rows' norms; a row no cell touches is an error. */
+    std::vector<double>
+    free_rows_transposed(const EquilibriumSystem &sys,
+                         const unsigned int       tau,
+                         std::vector<double>     &row_norm)
+    {
+      const unsigned int n = sys.free_rows.size();
+      row_norm.assign(n, 0.);
+      std::vector<double> A(static_cast<std::size_t>(tau) * n, 0.);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const EquilibriumRow &row = sys.rows[sys.free_rows[i]];
+          double *const col = A.data() + static_cast<std::size_t>(i) * tau;
+          for (const auto &[dof, c] : row.combination)
+            if (c != 0)
+              for (auto it = sys.B.begin(sys.b_row(dof));
+                   it != sys.B.end(sys.b_row(dof));
+                   ++it)
+                col[it->column()] += c * it->value();
+          for (unsigned int j = 0; j < tau; ++j)
+            row_norm[i] += col[j] * col[j];
+          row_norm[i] = std::sqrt(row_norm[i]);
+          if (row_norm[i] == 0)
+            throw InputError(
+              "Equilibrium reduction: " + sys.describe_row(sys.free_rows[i]) +
+              " is touched by no cell: a node without stiffness.");
+        }
+
+      return A;
+    }
+
+    /**
+     * The error for a rank-deficient C: the null vector of the first
+     * vanishing pivot of U (the LU factor of C^T in A) is a displacement of
+     * the free rows that no stress in the space resists; the nodes it moves
+     * most are named.
+     */
+    InputError
+    mechanism_error(const EquilibriumSystem         &sys,
+                    const std::vector<double>       &A,
+                    const unsigned int               tau,
+                    const std::vector<unsigned int> &zero_pivots)
+    {
+      const unsigned int n = sys.free_rows.size();
+      // Null vector y of U (hence of C^T): y_k = 1, y_{>k} = 0,
+      // U[0:k,0:k] y[0:k] = -U[0:k,k]. It is the mode: a displacement of
+      // the free rows that no stress in the space resists.
+      const unsigned int  k = zero_pivots.front();
+      std::vector<double> y(n, 0.);
+      y[k] = 1.;
+      for (unsigned int i = 0; i < k; ++i)
+        y[i] = -A[i + static_cast<std::size_t>(k) * tau];
+      if (k > 0)
+        {
+          const int ik = k, itau = tau, one = 1;
+          dtrsv_("U", "N", "N", &ik, A.data(), &itau, y.data(), &one);
+        }
+      // Nodes ranked by how much the mode moves them.
+      std::vector<std::pair<double, unsigned int>> node_motion;
+      std::vector<double> per_node(sys.node_coordinates.size(), 0.);
+      for (unsigned int i = 0; i < n; ++i)
+        per_node[sys.rows[sys.free_rows[i]].node] += y[i] * y[i];
+      for (unsigned int node = 0; node < per_node.size(); ++node)
+        if (per_node[node] > 0)
+          node_motion.emplace_back(std::sqrt(per_node[node]), node);
+      std::sort(node_motion.rbegin(), node_motion.rend());
+      const double largest =
+        node_motion.empty() ? 1. : node_motion.front().first;
+      std::ostringstream s;
+      s << "Equilibrium reduction: the equilibrium matrix C of the free rows "
+           "is rank deficient ("
+        << zero_pivots.size() << " of " << n
+        << " pivots vanish): the body has a zero-energy mode, i.e. a "
+           "mechanism, an unsupported (floating) body, or a stress space too "
+           "poor for this mesh. Add supports that stop rigid motions, or use "
+           "a richer stress element. First vanishing pivot at "
+        << sys.describe_row(sys.free_rows[k]) << ". The mode moves "
+        << node_motion.size() << " node(s); the largest motions are at:";
+      for (unsigned int i = 0; i < std::min<std::size_t>(4, node_motion.size());
+           ++i)
+        s << (i ? "," : "") << " " << sys.describe_node(node_motion[i].second)
+          << " [" << std::setprecision(2) << node_motion[i].first / largest
+          << "]";
+      s << ".";
+      return InputError(s.str());
+    }
+  } // namespace
+
   void
   EquilibriumReduction::initialize(const EquilibriumSystem &sys,
                                    std::ostream            *log)
@@ -137,26 +228,8 @@ namespace hrcontact
     m = tau - n;
 
     // A = C^T, tau x n, column-major: column i is free row i of B~.
-    std::vector<double> A(static_cast<std::size_t>(tau) * n, 0.);
-    std::vector<double> row_norm(n, 0.);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const EquilibriumRow &row = sys.rows[sys.free_rows[i]];
-        double *const col = A.data() + static_cast<std::size_t>(i) * tau;
-        for (const auto &[dof, c] : row.combination)
-          if (c != 0)
-            for (auto it = sys.B.begin(sys.b_row(dof));
-                 it != sys.B.end(sys.b_row(dof));
-                 ++it)
-              col[it->column()] += c * it->value();
-        for (unsigned int j = 0; j < tau; ++j)
-          row_norm[i] += col[j] * col[j];
-        row_norm[i] = std::sqrt(row_norm[i]);
-        if (row_norm[i] == 0)
-          throw InputError(
-            "Equilibrium reduction: " + sys.describe_row(sys.free_rows[i]) +
-            " is touched by no cell: a node without stiffness.");
-      }
+    std::vector<double> row_norm;
+    std::vector<double> A = free_rows_transposed(sys, tau, row_norm);
 
     // Gaussian reduction with row pivoting of C^T = column choice of C.
     std::vector<int> ipiv(n);
@@ -182,50 +255,7 @@ namespace hrcontact
             pivot_tolerance * row_norm[k]))
         zero_pivots.push_back(k);
     if (!zero_pivots.empty())
-      {
-        // Null vector y of U (hence of C^T): y_k = 1, y_{>k} = 0,
-        // U[0:k,0:k] y[0:k] = -U[0:k,k]. It is the mode: a displacement of
-        // the free rows that no stress in the space resists.
-        const unsigned int  k = zero_pivots.front();
-        std::vector<double> y(n, 0.);
-        y[k] = 1.;
-        for (unsigned int i = 0; i < k; ++i)
-          y[i] = -A[i + static_cast<std::size_t>(k) * tau];
-        if (k > 0)
-          {
-            const int ik = k, itau = tau, one = 1;
-            dtrsv_("U", "N", "N", &ik, A.data(), &itau, y.data(), &one);
-          }
-        // Nodes ranked by how much the mode moves them.
-        std::vector<std::pair<double, unsigned int>> node_motion;
-        std::vector<double> per_node(sys.node_coordinates.size(), 0.);
-        for (unsigned int i = 0; i < n; ++i)
-          per_node[sys.rows[sys.free_rows[i]].node] += y[i] * y[i];
-        for (unsigned int node = 0; node < per_node.size(); ++node)
-          if (per_node[node] > 0)
-            node_motion.emplace_back(std::sqrt(per_node[node]), node);
-        std::sort(node_motion.rbegin(), node_motion.rend());
-        const double largest =
-          node_motion.empty() ? 1. : node_motion.front().first;
-        std::ostringstream s;
-        s << "Equilibrium reduction: the equilibrium matrix C of the free rows "
-             "is rank deficient ("
-          << zero_pivots.size() << " of " << n
-          << " pivots vanish): the body has a zero-energy mode, i.e. a "
-             "mechanism, an unsupported (floating) body, or a stress space too "
-             "poor for this mesh. Add supports that stop rigid motions, or use "
-             "a richer stress element. First vanishing pivot at "
-          << sys.describe_row(sys.free_rows[k]) << ". The mode moves "
-          << node_motion.size() << " node(s); the largest motions are at:";
-        for (unsigned int i = 0;
-             i < std::min<std::size_t>(4, node_motion.size());
-             ++i)
-          s << (i ? "," : "") << " " << sys.describe_node(node_motion[i].second)
-            << " [" << std::setprecision(2) << node_motion[i].first / largest
-            << "]";
-        s << ".";
-        throw InputError(s.str());
-      }
+      throw mechanism_error(sys, A, tau, zero_pivots);
 
     if (log)
       *log << "  equilibrium reduction: rank(C) = " << n << " of " << n
