@@ -176,15 +176,13 @@ namespace hrcontact
     max_newton_steps   = prm.get_integer("Maximum Newton steps");
     update_carried_multipliers =
       prm.get_bool("Update carried multipliers with each Newton step");
-    {
-      const std::string r = prm.get("Regularisation");
-      regularisation = (r == "pure penalty") ? Regularisation::pure_penalty :
-                       (r == "Macaulay augmented Lagrangian") ?
-                                               Regularisation::macaulay :
-                       (r == "displacement augmented Lagrangian") ?
-                                               Regularisation::displacement :
-                                               Regularisation::consistent;
-    }
+    regularisation = get_selection<Regularisation>(
+      prm,
+      "Regularisation",
+      {{"consistent augmented Lagrangian", Regularisation::consistent},
+       {"Macaulay augmented Lagrangian", Regularisation::macaulay},
+       {"pure penalty", Regularisation::pure_penalty},
+       {"displacement augmented Lagrangian", Regularisation::displacement}});
     // The pure penalty has no multiplier updates to interleave.
     diagonal = (prm.get("Iteration scheme") == "diagonal") &&
                regularisation != Regularisation::pure_penalty;
