@@ -28,6 +28,14 @@ namespace hrcontact
       v.reinit(dof_handler.n_dofs());
   }
 
+  void
+  sum_over_processes(FieldVector &v, const MPI_Comm communicator)
+  {
+    const ArrayView<const double> values(v.begin(), v.size());
+    const ArrayView<double>       sums(v.begin(), v.size());
+    Utilities::MPI::sum(values, communicator, sums);
+  }
+
   bool
   all_finite(const FieldVector &v)
   {

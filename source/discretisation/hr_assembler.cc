@@ -189,13 +189,7 @@ namespace hrcontact
             system.load.update_ghost_values();
           }
         else if (error.empty())
-          {
-            const ArrayView<const double> values(system.load.begin(),
-                                                 system.load.size());
-            const ArrayView<double>       sums(system.load.begin(),
-                                         system.load.size());
-            Utilities::MPI::sum(values, lean->communicator, sums);
-          }
+          sum_over_processes(system.load, lean->communicator);
       }
     if (!error.empty())
       throw InputError(error);

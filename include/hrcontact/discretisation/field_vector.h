@@ -31,6 +31,12 @@ namespace hrcontact
   bool
   all_finite(const FieldVector &v);
 
+  /** Sum a complete vector over the processes of @p communicator, each of
+   * which filled its own entries and left zeros elsewhere (a field of a
+   * serial mesh under MPI, gathered on every process). */
+  void
+  sum_over_processes(FieldVector &v, const MPI_Comm communicator);
+
   /** Whether v holds every entry on this process (a serial mesh). */
   inline bool
   is_complete(const FieldVector &v)

@@ -226,10 +226,7 @@ namespace hrcontact
         displacement = 0;
         for (const auto i : partition.owned)
           displacement(i) = u(i);
-        const ArrayView<const double> values(displacement.begin(),
-                                             displacement.size());
-        const ArrayView<double> sums(displacement.begin(), displacement.size());
-        Utilities::MPI::sum(values, partition.communicator, sums);
+        sum_over_processes(displacement, partition.communicator);
       }
   }
 

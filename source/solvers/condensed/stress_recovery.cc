@@ -202,10 +202,6 @@ namespace hrcontact
     if (!is_complete(field))
       field.update_ghost_values();
     else if (partition.distributed())
-      {
-        const ArrayView<const double> values(field.begin(), field.size());
-        const ArrayView<double>       sums(field.begin(), field.size());
-        Utilities::MPI::sum(values, partition.communicator, sums);
-      }
+      sum_over_processes(field, partition.communicator);
   }
 } // namespace hrcontact

@@ -295,10 +295,6 @@ namespace hrcontact
     if (ghosted_u)
       u.update_ghost_values();
     else if (partition.distributed())
-      {
-        const ArrayView<const double> values(u.begin(), u.size());
-        const ArrayView<double>       sums(u.begin(), u.size());
-        Utilities::MPI::sum(values, partition.communicator, sums);
-      }
+      sum_over_processes(u, partition.communicator);
   }
 } // namespace hrcontact
