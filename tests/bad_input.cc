@@ -27,6 +27,15 @@ main()
                                  "nested-malformed",
                                  "bodies-overlap",
                                  "pair-out-of-reach",
+                                 "traction-missing-id",
+                                 "obstacle-missing-id",
+                                 "support-missing-id",
+                                 "normal-displacement-missing-id",
+                                 "boundary-support-missing-id",
+                                 "stop-missing-id",
+                                 "pair-missing-id",
+                                 "pair-law-missing-id",
+                                 "probe-outside",
                                  "no-such-file"})
     {
       std::filesystem::remove_all("should-not-exist");

@@ -148,6 +148,19 @@ namespace hrcontact
   }
 
   template <int dim>
+  std::vector<types::boundary_id>
+  ContactPairs<dim>::boundary_ids() const
+  {
+    std::vector<types::boundary_id> ids;
+    for (const Pair &p : pairs)
+      {
+        ids.push_back(p.slave);
+        ids.push_back(p.master);
+      }
+    return ids;
+  }
+
+  template <int dim>
   bool
   ContactPairs<dim>::parse_parameters(
     ParameterHandler                                          &prm,

@@ -61,6 +61,16 @@ namespace hrcontact
   }
 
   template <int dim>
+  std::vector<types::boundary_id>
+  CurvedObstacles<dim>::boundary_ids() const
+  {
+    std::vector<types::boundary_id> ids;
+    for (const auto &entry : obstacles)
+      ids.push_back(entry.first);
+    return ids;
+  }
+
+  template <int dim>
   bool
   CurvedObstacles<dim>::parse_parameters(
     ParameterHandler                                          &prm,

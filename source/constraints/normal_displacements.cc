@@ -34,6 +34,16 @@ namespace hrcontact
   }
 
   template <int dim>
+  std::vector<types::boundary_id>
+  BodyNormalConstraint<dim>::boundary_ids() const
+  {
+    std::vector<types::boundary_id> ids;
+    for (const auto &entry : values)
+      ids.push_back(entry.first);
+    return ids;
+  }
+
+  template <int dim>
   bool
   BodyNormalConstraint<dim>::parse_parameters(
     ParameterHandler                                          &prm,

@@ -40,6 +40,16 @@ namespace hrcontact
   }
 
   template <int dim>
+  std::vector<types::boundary_id>
+  PrescribedDisplacements<dim>::boundary_ids() const
+  {
+    std::vector<types::boundary_id> ids;
+    for (const auto &entry : prescriptions)
+      ids.push_back(entry.first);
+    return ids;
+  }
+
+  template <int dim>
   bool
   PrescribedDisplacements<dim>::is_normal_kind() const
   {

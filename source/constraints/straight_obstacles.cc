@@ -42,6 +42,16 @@ namespace hrcontact
   }
 
   template <int dim>
+  std::vector<types::boundary_id>
+  StraightObstacles<dim>::boundary_ids() const
+  {
+    std::vector<types::boundary_id> ids;
+    for (const auto &entry : obstacles)
+      ids.push_back(entry.first);
+    return ids;
+  }
+
+  template <int dim>
   bool
   StraightObstacles<dim>::parse_parameters(
     ParameterHandler                                          &prm,

@@ -83,6 +83,16 @@ namespace hrcontact
   }
 
   template <int dim>
+  std::vector<types::boundary_id>
+  TwoSidedStops<dim>::boundary_ids() const
+  {
+    std::vector<types::boundary_id> ids;
+    for (const auto &entry : stops)
+      ids.push_back(entry.first);
+    return ids;
+  }
+
+  template <int dim>
   bool
   TwoSidedStops<dim>::parse_parameters(
     ParameterHandler                                          &prm,

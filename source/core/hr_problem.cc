@@ -59,6 +59,7 @@ namespace hrcontact
     linear_solver.stiffening_compliance = bool(scene.stress_constraint);
     if (const CoarserLevelRequest *request = as_coarser_level)
       {
+        coarser_level            = true;
         scene.global_refinements = request->global_refinements;
         nested.take_request(*request);
         path_choice.setting    = request->path == SolutionPath::null_space ?
@@ -119,6 +120,10 @@ namespace hrcontact
     log << "  rows: " << system.n_free_rows << " free (C), "
         << system.contact_rows.size() << " normal (Q), "
         << system.prescribed_rows.size() << " prescribed (H)" << std::endl;
+    // The postprocessors' input against the mesh (a probe outside the
+    // body), after the rows' own checks and before the solve.
+    if (!coarser_level)
+      postprocessors.check_mesh(mesh.triangulation());
   }
 
   template <int dim>

@@ -2,6 +2,7 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <hrcontact/core/boundary_id_check.h>
 #include <hrcontact/core/mesh_setup.h>
 #include <hrcontact/geometry/cell_aspect_ratio.h>
 
@@ -39,6 +40,7 @@ namespace hrcontact
     else
       mesh = std::make_unique<Triangulation<dim>>();
     scene.create_mesh(*mesh);
+    check_named_boundary_ids(scene, *mesh, communicator);
     spaces.setup(*mesh);
     // Path = automatic takes the dense null-space path where it fits: a
     // mesh that small stays serial, as it needs every cell on every process

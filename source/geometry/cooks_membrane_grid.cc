@@ -52,6 +52,16 @@ namespace hrcontact
       (void)triangulation, (void)refinements;
   }
 
+  template <int dim>
+  std::map<types::boundary_id, std::string>
+  CooksMembraneGrid<dim>::boundary_names() const
+  {
+    return {{0, "clamped edge x = 0"},
+            {1, "loaded edge x = 48"},
+            {2, "lower edge"},
+            {3, "upper edge"}};
+  }
+
   template class CooksMembraneGrid<2>;
   template class CooksMembraneGrid<3>;
 

@@ -144,6 +144,15 @@ namespace hrcontact
       return MeshGenerator<dim>::refined_vertex_map();
   }
 
+  template <int dim>
+  std::map<types::boundary_id, std::string>
+  HalfCylinderGrid<dim>::boundary_names() const
+  {
+    return {{0, "symmetry plane x = 0"},
+            {1, "loaded diameter y = 0"},
+            {2, "curved surface"}};
+  }
+
   template class HalfCylinderGrid<2>;
   template class HalfCylinderGrid<3>;
 

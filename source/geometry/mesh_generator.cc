@@ -19,6 +19,13 @@ namespace hrcontact
   }
 
   template <int dim>
+  std::map<types::boundary_id, std::string>
+  MeshGenerator<dim>::boundary_names() const
+  {
+    return {};
+  }
+
+  template <int dim>
   bool
   MeshGenerator<dim>::create_coarse(Triangulation<dim> &) const
   {

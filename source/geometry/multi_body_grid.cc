@@ -153,6 +153,18 @@ namespace hrcontact
   }
 
   template <int dim>
+  std::map<types::boundary_id, std::string>
+  MultiBodyGrid<dim>::boundary_names() const
+  {
+    std::map<types::boundary_id, std::string> names;
+    for (unsigned int b = 0; b < n_bodies(); ++b)
+      for (const auto &[id, name] : grid_of(b).boundary_names())
+        names[id + (b == 0 ? 0 : others[b - 1].boundary_id_offset)] =
+          "body " + std::to_string(b + 1) + ": " + name;
+    return names;
+  }
+
+  template <int dim>
   const MeshGenerator<dim> &
   MultiBodyGrid<dim>::grid_of(const unsigned int b) const
   {

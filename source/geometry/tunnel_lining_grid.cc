@@ -42,6 +42,16 @@ namespace hrcontact
     return geometry;
   }
 
+  template <int dim>
+  std::map<types::boundary_id, std::string>
+  TunnelLiningGrid<dim>::boundary_names() const
+  {
+    return {{0, "intrados"},
+            {1, "extrados"},
+            {2, "symmetry cut at the crown top"},
+            {3, "symmetry cut at the invert bottom"}};
+  }
+
   template class TunnelLiningGrid<2>;
   template class TunnelLiningGrid<3>;
 

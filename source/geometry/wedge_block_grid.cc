@@ -56,6 +56,16 @@ namespace hrcontact
       }
   }
 
+  template <int dim>
+  std::map<types::boundary_id, std::string>
+  WedgeBlockGrid<dim>::boundary_names() const
+  {
+    return {{0, "face along b"},
+            {1, "face opposite the face along b"},
+            {2, "face along a"},
+            {3, "face opposite the face along a"}};
+  }
+
   template class WedgeBlockGrid<2>;
   template class WedgeBlockGrid<3>;
 

@@ -139,6 +139,31 @@ namespace hrcontact
   }
 
   template <int dim>
+  bool
+  mesh_contains_point(const Triangulation<dim> &triangulation,
+                      const Point<dim>         &point)
+  {
+    bool here = false;
+    try
+      {
+        const auto found =
+          GridTools::find_active_cell_around_point(MappingQ1<dim>(),
+                                                   triangulation,
+                                                   point);
+        here = found.first.state() == IteratorState::valid &&
+               found.first->is_locally_owned();
+      }
+    catch (const std::exception &)
+      {}
+    if (const auto *parallel_mesh =
+          dynamic_cast<const parallel::TriangulationBase<dim> *>(
+            &triangulation))
+      return Utilities::MPI::max(here ? 1 : 0,
+                                 parallel_mesh->get_communicator()) == 1;
+    return here;
+  }
+
+  template <int dim>
   std::pair<double, double>
   stress_error(const MixedSpaces<dim> &spaces,
                const FieldVector      &s,
@@ -193,6 +218,8 @@ namespace hrcontact
   template double point_value<dim>(const Results<dim> &,                       \
                                    const Point<dim> &,                         \
                                    const std::string &);                       \
+  template bool   mesh_contains_point<dim>(const Triangulation<dim> &,         \
+                                         const Point<dim> &);                \
   template std::pair<double, double> stress_error<dim>(                        \
     const MixedSpaces<dim> &, const FieldVector &, const Function<dim> &);
   HRCONTACT_INSTANTIATE(2)

@@ -153,6 +153,20 @@ namespace hrcontact
     return false;
   }
 
+  template <int dim>
+  void
+  Postprocessor<dim>::check_mesh(const Triangulation<dim> &) const
+  {}
+
+  template <int dim>
+  void
+  PostprocessorManager<dim>::check_mesh(
+    const Triangulation<dim> &triangulation) const
+  {
+    for (const auto &p : postprocessors)
+      p->check_mesh(triangulation);
+  }
+
   template class Postprocessor<2>;
   template class Postprocessor<3>;
   template class PostprocessorManager<2>;

@@ -5,6 +5,7 @@
 #include <hrcontact/postprocess/probes.h>
 
 #include <iomanip>
+#include <sstream>
 
 namespace hrcontact
 {
@@ -99,6 +100,23 @@ namespace hrcontact
                            constants,
                            "Postprocess/Reference stress");
     prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  Probes<dim>::check_mesh(const Triangulation<dim> &triangulation) const
+  {
+    for (const Probe &probe : probes)
+      if (!mesh_contains_point(triangulation, probe.point))
+        {
+          std::ostringstream point;
+          for (unsigned int d = 0; d < dim; ++d)
+            point << (d ? ", " : "") << probe.point[d];
+          throw InputError("Postprocess/Probes, '" + probe.name +
+                           "': the point (" + point.str() +
+                           ") is outside the body (no cell of the mesh "
+                           "contains it).");
+        }
   }
 
   template <int dim>

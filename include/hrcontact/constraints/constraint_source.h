@@ -143,6 +143,11 @@ namespace hrcontact
     virtual bool
     acts_on(const dealii::types::boundary_id id) const = 0;
 
+    /** The boundary ids its entry names, each of which must be on the mesh
+     * (check_named_boundary_ids). */
+    virtual std::vector<dealii::types::boundary_id>
+    boundary_ids() const = 0;
+
     /** Whether it puts a normal-type constraint on its boundaries (one
      * such kind per boundary). */
     virtual bool

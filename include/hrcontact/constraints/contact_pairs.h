@@ -57,6 +57,8 @@ namespace hrcontact
     entry() const override;
     bool
     acts_on(const dealii::types::boundary_id id) const override;
+    std::vector<dealii::types::boundary_id>
+    boundary_ids() const override;
     void
     prepare(const std::vector<BoundaryFace<dim>> &faces,
             const EquilibriumSystem              &system) const override;

@@ -35,6 +35,8 @@ namespace hrcontact
     entry() const override;
     bool
     acts_on(const dealii::types::boundary_id id) const override;
+    std::vector<dealii::types::boundary_id>
+    boundary_ids() const override;
     void
     collect(const BoundaryFace<dim> &face,
             const EquilibriumSystem &system,

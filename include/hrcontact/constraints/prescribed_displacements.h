@@ -30,6 +30,8 @@ namespace hrcontact
     entry() const override;
     bool
     acts_on(const dealii::types::boundary_id id) const override;
+    std::vector<dealii::types::boundary_id>
+    boundary_ids() const override;
     bool
     is_normal_kind() const override;
     void

@@ -44,6 +44,8 @@ namespace hrcontact
     entry() const override;
     bool
     acts_on(const dealii::types::boundary_id id) const override;
+    std::vector<dealii::types::boundary_id>
+    boundary_ids() const override;
     OwnRow
     own_row(const unsigned int          node,
             const dealii::Point<dim>   &point,

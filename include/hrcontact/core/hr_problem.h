@@ -89,6 +89,9 @@ namespace hrcontact
     build_path(std::ostream &log);
 
     MPI_Comm mpi_communicator;
+    /** A coarser level of the nested iteration: its polygonal mesh may miss
+     * a probe on a curved boundary, and it writes no results. */
+    bool coarser_level = false;
     /** Declared before the spaces, whose DoFHandlers refer to its mesh. */
     MeshSetup<dim>                  mesh;
     Scene<dim>                      scene;

@@ -29,6 +29,8 @@ namespace hrcontact
     /** The grading map. */
     std::function<dealii::Point<dim>(const dealii::Point<dim> &)>
     refined_vertex_map() const override;
+    std::map<dealii::types::boundary_id, std::string>
+    boundary_names() const override;
 
   private:
     const std::string arguments;

@@ -6,6 +6,7 @@
 #include <hrcontact/core/input.h>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -52,6 +53,13 @@ namespace hrcontact
      */
     virtual std::string
     fixed_geometry_reason() const;
+    /**
+     * What the grid's boundary ids are (e.g. 2: "curved surface"), for the
+     * message when a `.prm` entry names an id the mesh does not have; empty
+     * (the default) where the grid does not say.
+     */
+    virtual std::map<dealii::types::boundary_id, std::string>
+    boundary_names() const;
   };
 
   /** The name -> factory registry of MeshGenerator. */

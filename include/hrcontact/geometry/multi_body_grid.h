@@ -69,6 +69,10 @@ namespace hrcontact
     unsigned int
     n_bodies() const;
 
+    /** Each body's names, shifted by its offset, as "body k: name". */
+    std::map<dealii::types::boundary_id, std::string>
+    boundary_names() const override;
+
   private:
     /** Body b's grid, placement (identity for the first) and offset. */
     const MeshGenerator<dim> &

@@ -24,6 +24,8 @@ namespace hrcontact
            const unsigned int          refinements) const override;
     std::string
     fixed_geometry_reason() const override;
+    std::map<dealii::types::boundary_id, std::string>
+    boundary_names() const override;
 
     /** The lining's geometry. */
     std::shared_ptr<const TunnelLining>

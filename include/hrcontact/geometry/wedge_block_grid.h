@@ -18,6 +18,8 @@ namespace hrcontact
   {
   public:
     WedgeBlockGrid(const std::string &arguments, const Constants &constants);
+    std::map<dealii::types::boundary_id, std::string>
+    boundary_names() const override;
     void
     create(dealii::Triangulation<dim> &triangulation,
            const unsigned int          refinements) const override;

@@ -26,6 +26,15 @@ namespace hrcontact
   von_mises(const dealii::SymmetricTensor<2, dim> &sigma, const double szz);
 
   /**
+   * Whether a cell of the mesh (under the Q1 mapping) contains the point;
+   * collective on a distributed mesh, which asks every process's own cells.
+   */
+  template <int dim>
+  bool
+  mesh_contains_point(const dealii::Triangulation<dim> &triangulation,
+                      const dealii::Point<dim>         &point);
+
+  /**
    * A displacement or stress quantity of the results at a point: ux, uy,
    * uz, sxx, syy, szz, sxy, sxz, syz or von_mises (szz in 2D from the
    * material's out-of-plane stress). A stress at a point shared by cells is

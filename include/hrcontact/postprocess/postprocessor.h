@@ -65,6 +65,12 @@ namespace hrcontact
      */
     virtual bool
     needs_replicated_mesh(const Scene<dim> &scene) const;
+    /**
+     * Check its input against the mesh before the solve (a probe outside
+     * the body), throwing InputError; collective. Nothing by default.
+     */
+    virtual void
+    check_mesh(const dealii::Triangulation<dim> &triangulation) const;
   };
 
   /**
@@ -106,6 +112,9 @@ namespace hrcontact
     /** Whether one of them needs every cell on every process. */
     bool
     needs_replicated_mesh(const Scene<dim> &scene) const;
+    /** Each one's check_mesh. */
+    void
+    check_mesh(const dealii::Triangulation<dim> &triangulation) const;
 
     /** The names registered, in `all` order. */
     static std::vector<std::string>

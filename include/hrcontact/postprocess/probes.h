@@ -28,6 +28,9 @@ namespace hrcontact
                      const Constants          &constants) override;
     void
     execute(const Results<dim> &results, PostprocessOutput &output) override;
+    /** Every probe point inside the body, before the solve. */
+    void
+    check_mesh(const dealii::Triangulation<dim> &triangulation) const override;
 
   private:
     struct Probe
