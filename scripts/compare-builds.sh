@@ -6,12 +6,16 @@
 # the only lines allowed to differ.
 #   bash scripts/compare-builds.sh OLD_EXECUTABLE [NEW_EXECUTABLE] [SCENE ...]
 # NEW_EXECUTABLE defaults to build/hrcontact. Build the old one from another
-# checkout, e.g. `git worktree add /tmp/old main && cmake -S /tmp/old -B
-# /tmp/old/build && cmake --build /tmp/old/build -j2`.
+# checkout, e.g. `git worktree add ../old main && cmake -S ../old -B
+# ../old/build && cmake --build ../old/build -j2`.
 set -u
 root=$(cd "$(dirname "$0")/.." && pwd)
 old=${1:?usage: compare-builds.sh OLD_EXECUTABLE [NEW_EXECUTABLE] [SCENE ...]}
 new=${2:-$root/build/hrcontact}
+# The runs change directory: the executables by absolute path.
+absolute() { case "$1" in /*) echo "$1" ;; */*) echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" ;; *) echo "$1" ;; esac; }
+old=$(absolute "$old")
+new=$(absolute "$new")
 shift 2 2>/dev/null || shift
 scenes=("$@")
 [ ${#scenes[@]} -gt 0 ] || scenes=($(cd "$root/parameters" && ls *.prm | sed 's/\.prm$//'))

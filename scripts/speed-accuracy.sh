@@ -34,8 +34,8 @@
 # Writes doc/speed-accuracy-data.csv, doc/speed-accuracy-table.md and
 # doc/figures/speed-accuracy.png (Pareto plots: solver error against wall
 # seconds and against linear solves, one row of panels per scene); the run
-# directories go to /tmp/speed-accuracy (its run directories are wiped at the
-# start).
+# directories go to WORK, build/speed-accuracy by default (its run directories
+# are wiped at the start); the table's rundir column is relative to WORK.
 #
 #   bash scripts/speed-accuracy.sh            full study (R = 3 repeats)
 #   QUICK=1 bash scripts/speed-accuracy.sh    quick check: one mesh per scene,
@@ -49,7 +49,7 @@
 #   PART=solvers | elements | all (default) selects the parts.
 # Optional overrides (environment): REPEATS, TOLERANCES ("1e-4 1e-8"),
 # HERTZ_LEVELS ("5 6"), LIFT_OFF_LEVELS ("5 6") (Global refinements),
-# RUN_TIMEOUT (seconds per run, default 600), WORK (default /tmp/speed-accuracy).
+# RUN_TIMEOUT (seconds per run, default 600), WORK (default build/speed-accuracy).
 # Needs python3 and gnuplot (Debian: apt-get install gnuplot-nox).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -82,7 +82,9 @@ else
   mode=full
   : "${REPEATS:=3}" "${TOLERANCES:=1e-4 1e-8 1e-12}" "${HERTZ_LEVELS:=5 6}" "${LIFT_OFF_LEVELS:=5 6}"
 fi
-: "${RUN_TIMEOUT:=600}" "${WORK:=/tmp/speed-accuracy}"
+: "${RUN_TIMEOUT:=600}" "${WORK:=build/speed-accuracy}"
+# The runs change into their own directories: WORK as an absolute path.
+mkdir -p "$WORK" && WORK=$(cd "$WORK" && pwd)
 # Wipe only what an earlier run of this script put there.
 part=${PART:-all}
 case "$part" in
@@ -347,7 +349,7 @@ for i, (scene, scene_prm, level, label, regularisation, scheme, penalty, tol) in
         **measures(r, references[key]),
         reference_penalty=(references[key]["penalty"]
                            if references[key]["status"] == "converged" else ""),
-        rundir=r["rundir"])
+        rundir=os.path.relpath(r["rundir"], WORK))
     records.append(rec)
     log(f"[{i}/{len(configs)}] {scene} r{level} {label} {scheme} tol {tol}: {r['status']}"
         f"{' (' + r['reason'] + ')' if r['reason'] else ''}, {rec['wall_median_s']:.2f} s,"
@@ -394,7 +396,7 @@ lines = [
     f"Reproduce: `{os.environ['REPRODUCE']}` ({MODE} mode, {REPEATS} repeat(s) per run,"
     f" generated {datetime.date.today().isoformat()}).",
     "",
-    f"Executable: {EXE} built {BUILT}; sources {SOURCES}.",
+    f"Executable: {os.path.relpath(EXE, ROOT)} built {BUILT}; sources {SOURCES}.",
     "",
     "Reference: consistent augmented Lagrangian, classical, Relative tolerance 1e-12,"
     " same mesh, Initial penalty factor " + "; ".join(
