@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian 12 machine (run as root, or with sudo available):
-#   bash scripts/quickstart.sh example   set up, build (Release), run parameters/cantilever.prm
+#   bash scripts/quickstart.sh example   set up, build (Release), run parameters/hertz.prm
+#                                        (Hertz contact: the closed-form comparison and
+#                                        output/hertz/pressure.png)
 #   bash scripts/quickstart.sh test      set up, build (Release), run the whole test suite
 # Set-up installs only the Debian packages that are missing, so it is quick when
 # everything is present. JOBS (default 2) sets the build parallelism.
@@ -37,7 +39,13 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$jobs"
 
 if [ "$what" = example ]; then
-  ./build/hrcontact parameters/cantilever.prm
+  # The main example: the paper's Hertz contact, compared with the closed
+  # form in the log and drawn against it in output/hertz/pressure.png.
+  ./build/hrcontact parameters/hertz.prm
+  echo
+  echo "quickstart: the contact pressure against Hertz: output/hertz/pressure.png"
+  echo "quickstart: in ParaView open output/hertz/solution.vtu (stress, von_mises,"
+  echo "            contact_pressure, contact_gap, contact_status)"
 else
   # Build every test program first (two at a time), then run them.
   ctest --test-dir build -N > /dev/null

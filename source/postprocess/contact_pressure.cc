@@ -3,6 +3,7 @@
 
 #include <hrcontact/material/linear_elasticity.h>
 #include <hrcontact/postprocess/contact_pressure.h>
+#include <hrcontact/postprocess/pressure_plot.h>
 #include <hrcontact/postprocess/sorted_rows.h>
 
 #include <cmath>
@@ -32,6 +33,14 @@ namespace hrcontact
                       "The cylinder radius R of the Hertz comparison; two "
                       "cylinders: 1/R = 1/R1 + 1/R2.");
     prm.declare_entry(
+      "Pressure plot",
+      "false",
+      Patterns::Bool(),
+      "2D contact: write pressure.csv (x, y, nodal pressure, status, Hertz's "
+      "pressure), the gnuplot script pressure.gp and, where gnuplot is "
+      "installed, pressure.png: the nodal contact pressure along x against "
+      "Hertz's ellipse when Hertz load and radius are set.");
+    prm.declare_entry(
       "Hertz modulus",
       "",
       Patterns::Anything(),
@@ -51,6 +60,7 @@ namespace hrcontact
     hertz_load    = prm.get("Hertz load");
     hertz_radius  = prm.get("Hertz radius");
     hertz_modulus = prm.get("Hertz modulus");
+    plot          = prm.get_bool("Pressure plot");
     prm.leave_subsection();
   }
 
@@ -67,72 +77,94 @@ namespace hrcontact
     return "";
   }
 
-  template <int dim>
-  void
-  ContactPressure<dim>::execute(const Results<dim> &results,
-                                PostprocessOutput  &output)
+  namespace
   {
-    const EquilibriumSystem &system  = results.system;
-    Summary                 &summary = output.summary;
-    std::ostream            &log     = output.log;
-    // Pressure at a node = -p / (half the lengths of its two neighbouring
-    // contact edges): the nodal reaction spread over its tributary length.
-    // Assumes the contact boundary is one curve, monotone in x.
-    const std::vector<unsigned int> order = sorted_contact_rows(system);
-    const unsigned int              nc    = order.size();
-    auto                            point = [&](const unsigned int j) {
-      const auto &c =
-        system
-          .node_coordinates[system.rows[system.contact_rows[order[j]]].node];
-      return Point<2>(c[0], c[1]);
-    };
-    double peak = 0, zone_end = 0;
-    bool   any_pressed = false;
-    for (unsigned int j = 0; j < nc; ++j)
-      {
-        const double left = (j > 0) ? point(j).distance(point(j - 1)) : 0.;
-        const double right =
-          (j + 1 < nc) ? point(j).distance(point(j + 1)) : 0.;
-        const double       tributary = 0.5 * (left + right);
-        const unsigned int k         = order[j];
-        if (!results.contact->released[k] && tributary > 0)
-          {
-            any_pressed = true;
-            peak = std::max(peak, -results.reactions.contact[k] / tributary);
-            // The zone ends halfway to the next open node.
-            zone_end =
-              point(j)[0] +
-              ((j + 1 < nc && results.contact->released[order[j + 1]]) ?
-                 0.5 * (point(j + 1)[0] - point(j)[0]) :
-                 0.);
-          }
-      }
-    double zone_start = 0;
-    for (unsigned int j = 0; j < nc; ++j)
-      if (!results.contact->released[order[j]])
+    /**
+     * The nodal pressures along the contact boundary, in the order of x:
+     * -p over the node's tributary length, half the lengths of its two
+     * neighbouring contact edges (the nodal reaction spread over its
+     * share). Assumes the contact boundary is one curve, monotone in x.
+     */
+    template <int dim>
+    std::vector<PressurePoint>
+    pressure_profile(const Results<dim> &results)
+    {
+      const EquilibriumSystem        &system = results.system;
+      const std::vector<unsigned int> order  = sorted_contact_rows(system);
+      auto                            point  = [&](const unsigned int j) {
+        const auto &c =
+          system
+            .node_coordinates[system.rows[system.contact_rows[order[j]]].node];
+        return Point<2>(c[0], c[1]);
+      };
+      std::vector<PressurePoint> profile(order.size());
+      for (unsigned int j = 0; j < order.size(); ++j)
         {
-          zone_start = point(j)[0] -
-                       ((j > 0) ? 0.5 * (point(j)[0] - point(j - 1)[0]) : 0.);
-          break;
+          const double left = (j > 0) ? point(j).distance(point(j - 1)) : 0.;
+          const double right =
+            (j + 1 < order.size()) ? point(j).distance(point(j + 1)) : 0.;
+          const double       tributary = 0.5 * (left + right);
+          const unsigned int k         = order[j];
+          profile[j].x                 = point(j)[0];
+          profile[j].y                 = point(j)[1];
+          profile[j].pressed           = !results.contact->released[k];
+          profile[j].pressure =
+            tributary > 0 ? -results.reactions.contact[k] / tributary : 0.;
         }
-    summary.add("peak_pressure", any_pressed ? peak : 0.);
-    summary.add("contact_zone_x_min", zone_start);
-    summary.add("contact_zone_x_max", zone_end);
+      return profile;
+    }
+
+    /** The peak pressure and the zone [start, end] of the pressed nodes,
+     * each end halfway to the next open node. */
+    struct PressedZone
+    {
+      double peak = 0, start = 0, end = 0;
+    };
+
+    PressedZone
+    pressed_zone(const std::vector<PressurePoint> &profile)
+    {
+      PressedZone zone;
+      bool        found = false;
+      const auto  n     = profile.size();
+      for (unsigned int j = 0; j < n; ++j)
+        if (profile[j].pressed)
+          {
+            if (!found)
+              zone.start =
+                profile[j].x -
+                ((j > 0) ? 0.5 * (profile[j].x - profile[j - 1].x) : 0.);
+            found     = true;
+            zone.peak = std::max(zone.peak, profile[j].pressure);
+            zone.end =
+              profile[j].x + ((j + 1 < n && !profile[j + 1].pressed) ?
+                                0.5 * (profile[j + 1].x - profile[j].x) :
+                                0.);
+          }
+      return zone;
+    }
+  } // namespace
+
+  template <int dim>
+  HertzEllipse
+  ContactPressure<dim>::hertz_ellipse(const Results<dim> &results) const
+  {
     if (Utilities::trim(hertz_load).empty() ||
         Utilities::trim(hertz_radius).empty())
-      return;
+      return {};
     // Plane strain Hertz contact of a cylinder on a rigid plane; the half
     // model's pressed zone starts at the symmetry plane.
-    const double P      = evaluate_constant_expression(hertz_load,
-                                                  results.scene.constants,
+    const Constants &constants = results.scene.constants;
+    const double     P         = evaluate_constant_expression(hertz_load,
+                                                  constants,
                                                   "Postprocess/Hertz load");
-    const double R      = evaluate_constant_expression(hertz_radius,
-                                                  results.scene.constants,
+    const double     R         = evaluate_constant_expression(hertz_radius,
+                                                  constants,
                                                   "Postprocess/Hertz radius");
-    double       E_star = 0;
+    double           E_star    = 0;
     if (!Utilities::trim(hertz_modulus).empty())
       E_star = evaluate_constant_expression(hertz_modulus,
-                                            results.scene.constants,
+                                            constants,
                                             "Postprocess/Hertz modulus");
     else
       {
@@ -145,20 +177,46 @@ namespace hrcontact
         const double nu = elastic->poisson_ratio();
         E_star          = elastic->youngs_modulus() / (1 - nu * nu);
       }
-    const double a_hertz = std::sqrt(4 * P * R / (numbers::PI * E_star));
-    const double p_hertz = 2 * P / (numbers::PI * a_hertz);
-    const double a       = zone_end - zone_start;
-    summary.add("contact_half_width", a);
-    summary.add("hertz_half_width", a_hertz);
-    summary.add("relative_error_half_width", (a - a_hertz) / a_hertz);
-    summary.add("hertz_peak_pressure", p_hertz);
-    summary.add("relative_error_peak_pressure", (peak - p_hertz) / p_hertz);
-    log << "  Hertz: half width " << std::setprecision(5) << a << " (Hertz "
-        << a_hertz << ", error " << std::setprecision(3)
-        << 100 * (a - a_hertz) / a_hertz << " %), peak pressure "
-        << std::setprecision(5) << peak << " (Hertz " << p_hertz << ", error "
-        << std::setprecision(3) << 100 * (peak - p_hertz) / p_hertz << " %)"
-        << std::endl;
+    HertzEllipse hertz;
+    hertz.half_width = std::sqrt(4 * P * R / (numbers::PI * E_star));
+    hertz.peak       = 2 * P / (numbers::PI * hertz.half_width);
+    return hertz;
+  }
+
+  template <int dim>
+  void
+  ContactPressure<dim>::execute(const Results<dim> &results,
+                                PostprocessOutput  &output)
+  {
+    Summary                         &summary = output.summary;
+    std::ostream                    &log     = output.log;
+    const std::vector<PressurePoint> profile = pressure_profile(results);
+    const PressedZone                zone    = pressed_zone(profile);
+    summary.add("peak_pressure", zone.peak);
+    summary.add("contact_zone_x_min", zone.start);
+    summary.add("contact_zone_x_max", zone.end);
+    const HertzEllipse hertz = hertz_ellipse(results);
+    if (hertz.half_width > 0)
+      {
+        const double a = zone.end - zone.start, a_hertz = hertz.half_width,
+                     p_hertz = hertz.peak;
+        summary.add("contact_half_width", a);
+        summary.add("hertz_half_width", a_hertz);
+        summary.add("relative_error_half_width", (a - a_hertz) / a_hertz);
+        summary.add("hertz_peak_pressure", p_hertz);
+        summary.add("relative_error_peak_pressure",
+                    (zone.peak - p_hertz) / p_hertz);
+        log << "  Hertz: half width " << std::setprecision(5) << a << " (Hertz "
+            << a_hertz << ", error " << std::setprecision(3)
+            << 100 * (a - a_hertz) / a_hertz << " %), peak pressure "
+            << std::setprecision(5) << zone.peak << " (Hertz " << p_hertz
+            << ", error " << std::setprecision(3)
+            << 100 * (zone.peak - p_hertz) / p_hertz << " %)" << std::endl;
+      }
+    if (plot)
+      for (const std::string &file : write_pressure_plot(
+             profile, hertz, output.directory, output.communicator, log))
+        output.mentioned_files.push_back(file);
   }
 
   template class ContactPressure<2>;

@@ -4,8 +4,11 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <hrcontact/discretisation/stress_constraint_field.h>
+#include <hrcontact/postprocess/contact_fields.h>
 #include <hrcontact/postprocess/field_values.h>
 #include <hrcontact/postprocess/solution_output.h>
+
+#include <optional>
 
 namespace hrcontact
 {
@@ -148,6 +151,11 @@ namespace hrcontact
         return cell;
       };
 
+      // The contact pressure, gap and status as nodal fields (declared
+      // before data_out, which refers to their DoFHandler).
+      std::optional<ContactFields<dim>> contact_fields;
+      if (results.contact)
+        contact_fields.emplace(results);
       DataOut<dim> data_out;
       data_out.attach_triangulation(tria);
       if (partition.distributed())
@@ -176,6 +184,8 @@ namespace hrcontact
           fracture = results.stress_constraint.field->cell_openings();
           data_out.add_data_vector(fracture, "fracture_strain");
         }
+      if (contact_fields)
+        contact_fields->add_to(data_out);
       data_out.build_patches();
       if (!partition.distributed())
         {

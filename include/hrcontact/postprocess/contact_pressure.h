@@ -2,6 +2,7 @@
 #define hrcontact_contact_pressure_h
 
 #include <hrcontact/postprocess/postprocessor.h>
+#include <hrcontact/postprocess/pressure_plot.h>
 
 #include <string>
 
@@ -29,7 +30,14 @@ namespace hrcontact
     execute(const Results<dim> &results, PostprocessOutput &output) override;
 
   private:
+    /** Hertz's half width and peak pressure (a = 0 without Hertz load and
+     * radius). */
+    HertzEllipse
+    hertz_ellipse(const Results<dim> &results) const;
+
     std::string hertz_load, hertz_radius, hertz_modulus;
+    /** Postprocess/Pressure plot. */
+    bool plot = false;
   };
 } // namespace hrcontact
 

@@ -7,7 +7,9 @@ namespace hrcontact
 {
   /**
    * Postprocessor "solution": solution.vtu for ParaView (displacement,
-   * stress tensor, principal stresses, von Mises, the stress components),
+   * stress tensor, principal stresses, von Mises, the stress components,
+   * and with contact the nodal contact_pressure, contact_gap and
+   * contact_status of ContactFields),
    * or under mpirun solution.pvtu with one piece solution_NNNN.vtu per
    * process and a "subdomain" field. Output/Write solution switches it off.
    */
