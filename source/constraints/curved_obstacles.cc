@@ -64,10 +64,7 @@ namespace hrcontact
   std::vector<types::boundary_id>
   CurvedObstacles<dim>::boundary_ids() const
   {
-    std::vector<types::boundary_id> ids;
-    for (const auto &entry : obstacles)
-      ids.push_back(entry.first);
-    return ids;
+    return boundary_ids_of(obstacles);
   }
 
   template <int dim>

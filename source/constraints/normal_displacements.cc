@@ -37,10 +37,7 @@ namespace hrcontact
   std::vector<types::boundary_id>
   BodyNormalConstraint<dim>::boundary_ids() const
   {
-    std::vector<types::boundary_id> ids;
-    for (const auto &entry : values)
-      ids.push_back(entry.first);
-    return ids;
+    return boundary_ids_of(values);
   }
 
   template <int dim>

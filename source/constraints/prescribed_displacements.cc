@@ -43,10 +43,7 @@ namespace hrcontact
   std::vector<types::boundary_id>
   PrescribedDisplacements<dim>::boundary_ids() const
   {
-    std::vector<types::boundary_id> ids;
-    for (const auto &entry : prescriptions)
-      ids.push_back(entry.first);
-    return ids;
+    return boundary_ids_of(prescriptions);
   }
 
   template <int dim>

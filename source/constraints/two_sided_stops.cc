@@ -86,10 +86,7 @@ namespace hrcontact
   std::vector<types::boundary_id>
   TwoSidedStops<dim>::boundary_ids() const
   {
-    std::vector<types::boundary_id> ids;
-    for (const auto &entry : stops)
-      ids.push_back(entry.first);
-    return ids;
+    return boundary_ids_of(stops);
   }
 
   template <int dim>

@@ -194,6 +194,17 @@ namespace hrcontact
     relinearisation(EquilibriumSystem &system) const;
   };
 
+  /** The boundary ids of a kind's entries, the keys of its map by id. */
+  template <typename MapById>
+  std::vector<dealii::types::boundary_id>
+  boundary_ids_of(const MapById &entries)
+  {
+    std::vector<dealii::types::boundary_id> ids;
+    for (const auto &entry : entries)
+      ids.push_back(entry.first);
+    return ids;
+  }
+
   /**
    * One normal-type constraint kind per boundary: InputError "WHERE:
    * boundary ID already has WHAT." if an earlier normal kind acts on it.
