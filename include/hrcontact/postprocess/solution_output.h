@@ -1,6 +1,8 @@
 #ifndef hrcontact_solution_output_h
 #define hrcontact_solution_output_h
 
+#include <deal.II/base/data_out_base.h>
+
 #include <hrcontact/postprocess/postprocessor.h>
 
 namespace hrcontact
@@ -29,6 +31,9 @@ namespace hrcontact
 
   private:
     bool write = true;
+    /** Output/Solution compression. */
+    dealii::DataOutBase::VtkFlags::ZlibCompressionLevel compression =
+      dealii::DataOutBase::VtkFlags::best_speed;
   };
 } // namespace hrcontact
 
