@@ -88,6 +88,30 @@ namespace hrcontact
                                                  found.first->material_id());
       return sigma[a][b];
     }
+
+    /** The cell of this process around the point (Q1 mapping) and the
+     * point in its reference cell; end() where no own cell holds it. */
+    template <typename MeshType>
+    auto
+    own_cell_around(const MeshType                   &mesh,
+                    const Point<MeshType::dimension> &point)
+    {
+      decltype(GridTools::find_active_cell_around_point(
+        MappingQ1<MeshType::dimension>(), mesh, point)) found;
+      try
+        {
+          found = GridTools::find_active_cell_around_point(
+            MappingQ1<MeshType::dimension>(), mesh, point);
+        }
+      catch (const std::exception &)
+        {
+          found.first = mesh.end();
+        }
+      if (found.first.state() != IteratorState::valid ||
+          !found.first->is_locally_owned())
+        found.first = mesh.end();
+      return found;
+    }
   } // namespace
 
   template <int dim>
@@ -97,21 +121,8 @@ namespace hrcontact
               const std::string  &quantity)
   {
     const MixedSpaces<dim> &spaces = results.spaces;
-    const MappingQ1<dim>    mapping;
-    std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>> found;
-    try
-      {
-        found =
-          GridTools::find_active_cell_around_point(mapping,
-                                                   spaces.dof_handler_stress,
-                                                   point);
-      }
-    catch (const std::exception &)
-      {
-        found.first = spaces.dof_handler_stress.end();
-      }
-    const bool here = found.first.state() == IteratorState::valid &&
-                      found.first->is_locally_owned();
+    const auto        found = own_cell_around(spaces.dof_handler_stress, point);
+    const bool        here  = found.first != spaces.dof_handler_stress.end();
     const std::string outside = "Postprocess/Probes: the point (" +
                                 Utilities::to_string(point[0]) +
                                 ", ...) is outside the mesh.";
@@ -143,18 +154,8 @@ namespace hrcontact
   mesh_contains_point(const Triangulation<dim> &triangulation,
                       const Point<dim>         &point)
   {
-    bool here = false;
-    try
-      {
-        const auto found =
-          GridTools::find_active_cell_around_point(MappingQ1<dim>(),
-                                                   triangulation,
-                                                   point);
-        here = found.first.state() == IteratorState::valid &&
-               found.first->is_locally_owned();
-      }
-    catch (const std::exception &)
-      {}
+    const bool here =
+      own_cell_around(triangulation, point).first != triangulation.end();
     if (const auto *parallel_mesh =
           dynamic_cast<const parallel::TriangulationBase<dim> *>(
             &triangulation))
