@@ -125,6 +125,86 @@ namespace hrcontact
     return m;
   }
 
+  template <int dim>
+  void
+  PrincipalStressSign<dim>::elastic_projection(
+    const SymmetricTensor<2, dim> &eps,
+    const double                   lambda,
+    const double                   shear,
+    SymmetricTensor<2, dim>       &sigma,
+    SymmetricTensor<4, dim>       *tangent,
+    SymmetricTensor<2, dim>       *fracture) const
+  {
+    // No tension on s eps; sorted e_1 >= e_2 (>= e_3).
+    const auto   e     = spectrum<dim>(sign * eps);
+    const double G2    = 2 * shear;
+    double       scale = 0;
+    for (unsigned int i = 0; i < dim; ++i)
+      scale = std::max(scale, std::abs(e[i].first));
+    const double            tol = 1e-13 * scale * (lambda + G2);
+    std::array<double, dim> s{}, m{};
+    unsigned int            cracked = dim;
+    double                  tr      = 0;
+    for (unsigned int n = 0; n <= dim; ++n)
+      {
+        double sum = 0;
+        for (unsigned int j = n; j < dim; ++j)
+          sum += e[j].first;
+        tr        = sum * G2 / (G2 + n * lambda);
+        bool fits = true;
+        for (unsigned int j = 0; j < dim; ++j)
+          {
+            s[j] = (j < n) ? 0. : lambda * tr + G2 * e[j].first;
+            m[j] = (j < n) ? e[j].first + lambda * tr / G2 : 0.;
+            if (s[j] > tol || m[j] * (lambda + G2) < -tol)
+              fits = false;
+          }
+        if (fits)
+          {
+            cracked = n;
+            break;
+          }
+      }
+    // The last candidate (every direction open) fits up to round-off when
+    // no earlier one did: keep it.
+    std::array<SymmetricTensor<2, dim>, dim> N;
+    for (unsigned int i = 0; i < dim; ++i)
+      N[i] = symmetrize(outer_product(e[i].second, e[i].second));
+    sigma = 0;
+    for (unsigned int j = cracked; j < dim; ++j)
+      sigma += s[j] * N[j];
+    sigma *= sign;
+    if (fracture)
+      {
+        *fracture = 0;
+        for (unsigned int i = 0; i < cracked; ++i)
+          *fracture += m[i] * N[i];
+        *fracture *= sign;
+      }
+    if (!tangent)
+      return;
+    // d sigma_j / d e_k on the uncracked directions, then the spins.
+    *tangent                 = 0;
+    const double lambda_open = lambda * G2 / (G2 + cracked * lambda);
+    for (unsigned int j = cracked; j < dim; ++j)
+      for (unsigned int k = cracked; k < dim; ++k)
+        *tangent +=
+          (lambda_open + (j == k ? G2 : 0.)) * outer_product(N[j], N[k]);
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i + 1; j < dim; ++j)
+        {
+          const double gap = e[i].first - e[j].first;
+          double       spin;
+          if (gap > 1e-12 * scale)
+            spin = (s[i] - s[j]) / gap;
+          else
+            spin = (i >= cracked) ? G2 : 0.; // both closed: elastic
+          const SymmetricTensor<2, dim> M =
+            symmetrize(outer_product(e[i].second, e[j].second)) * std::sqrt(2.);
+          *tangent += spin * outer_product(M, M);
+        }
+  }
+
   template class PrincipalStressSign<2>;
   template class PrincipalStressSign<3>;
 

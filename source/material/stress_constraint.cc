@@ -8,6 +8,20 @@ namespace hrcontact
   using namespace dealii;
 
   template <int dim>
+  void
+  StressConstraint<dim>::elastic_projection(const SymmetricTensor<2, dim> &,
+                                            const double,
+                                            const double,
+                                            SymmetricTensor<2, dim> &,
+                                            SymmetricTensor<4, dim> *,
+                                            SymmetricTensor<2, dim> *) const
+  {
+    throw InputError("Material/Admissible stresses = " + name() +
+                     ": this cone has no closed-form projection; set Stress "
+                     "constraint iteration/Method = augmented Lagrangian.");
+  }
+
+  template <int dim>
   std::vector<typename StressConstraintFactory<dim>::Entry> &
   StressConstraintFactory<dim>::registry()
   {
@@ -69,6 +83,8 @@ namespace hrcontact
                      name + "' (known: " + names + ").");
   }
 
+  template class StressConstraint<2>;
+  template class StressConstraint<3>;
   template class StressConstraintFactory<2>;
   template class StressConstraintFactory<3>;
 } // namespace hrcontact

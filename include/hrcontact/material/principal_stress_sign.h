@@ -50,6 +50,26 @@ namespace hrcontact
     violation(const dealii::SymmetricTensor<2, dim> &sigma) const override;
     double
     opening(const dealii::SymmetricTensor<2, dim> &mu) const override;
+    /**
+     * In the principal frame of s eps (e_1 >= ... >= e_dim), the cracks
+     * open along the m largest strains: sigma_i = 0 there, mu_i = e_i +
+     * lambda tr / (2 G), and sigma_j = lambda tr + 2 G e_j elsewhere, with
+     * tr = (sum_j e_j) 2 G / (2 G + m lambda) the trace of the elastic
+     * strain. The first m = 0, ..., dim whose sigma_j <= 0 and mu_i >= 0
+     * is the projection (a point that meets them is the KKT point of a
+     * strictly convex problem). The tangent is that of an isotropic
+     * function of the strain: the derivatives of the principal stresses
+     * plus the spins (sigma_i - sigma_j) / (e_i - e_j); no compression is
+     * the mirror, sigma(eps) = -sigma_+(-eps).
+     */
+    void
+    elastic_projection(
+      const dealii::SymmetricTensor<2, dim> &eps,
+      const double                           lambda,
+      const double                           shear,
+      dealii::SymmetricTensor<2, dim>       &sigma,
+      dealii::SymmetricTensor<4, dim>       *tangent,
+      dealii::SymmetricTensor<2, dim>       *fracture) const override;
 
   private:
     const double sign;

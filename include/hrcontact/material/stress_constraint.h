@@ -83,6 +83,25 @@ namespace hrcontact
     /** The size of a multiplier: its largest principal value in magnitude. */
     virtual double
     opening(const dealii::SymmetricTensor<2, dim> &mu) const = 0;
+
+    /**
+     * The cone imposed at one point in closed form (GaussPointCone): the
+     * stress of the strain eps in an isotropic elastic body whose stresses
+     * must lie in K, sigma = argmin over K of |sigma - C eps| in the
+     * compliance metric (the point's share of eq. 22 maximised over K), C
+     * given by its in-plane Lame constants lambda and shear. Also the
+     * fracture strain mu = eps - C^{-1} sigma (in the polar cone, mu :
+     * sigma = 0) and the derivative d sigma / d eps (the consistent
+     * tangent: positive semidefinite, C where no crack is open), each when
+     * asked for. The default refuses: a cone without a closed form.
+     */
+    virtual void
+    elastic_projection(const dealii::SymmetricTensor<2, dim> &eps,
+                       const double                           lambda,
+                       const double                           shear,
+                       dealii::SymmetricTensor<2, dim>       &sigma,
+                       dealii::SymmetricTensor<4, dim>       *tangent,
+                       dealii::SymmetricTensor<2, dim>       *fracture) const;
   };
 
   /**
