@@ -74,12 +74,17 @@ namespace hrcontact
     if (!r.scene.stress_constraint)
       return;
     summary.add("stress_constraint", r.scene.stress_constraint->name());
-    summary.add("stress_constraint_updates",
-                r.stress_constraint.residuals.size());
-    summary.add("stress_constraint_residual",
-                r.stress_constraint.residuals.empty() ?
-                  0. :
-                  r.stress_constraint.residuals.back());
+    // The closed-form projection has no multiplier updates (its
+    // convergence is material_stress_change, the model's stress error).
+    if (r.stress_constraint.residuals.empty())
+      summary.add("stress_constraint_method", "closed-form projection");
+    else
+      {
+        summary.add("stress_constraint_updates",
+                    r.stress_constraint.residuals.size());
+        summary.add("stress_constraint_residual",
+                    r.stress_constraint.residuals.back());
+      }
     summary.add(dim == 2 ? "cracked_area_fraction" : "cracked_volume_fraction",
                 r.stress_constraint.cracked_fraction);
     summary.add("largest_fracture_strain",

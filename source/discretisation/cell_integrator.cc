@@ -1,5 +1,6 @@
 #include <hrcontact/core/input.h>
 #include <hrcontact/discretisation/cell_integrator.h>
+#include <hrcontact/discretisation/gauss_point_cone.h>
 #include <hrcontact/discretisation/stress_constraint_field.h>
 
 #include <cmath>
@@ -14,11 +15,13 @@ namespace hrcontact
     const Scene<dim>                 &scene,
     const MixedSpaces<dim>           &spaces,
     const FieldVector                *stress_state,
-    const StressConstraintField<dim> *constraint_field)
+    const StressConstraintField<dim> *constraint_field,
+    const GaussPointCone<dim>        *cone)
     : scene(scene)
     , spaces(spaces)
     , stress_state(stress_state)
     , constraint_field(constraint_field)
+    , cone(cone)
     , parameters(spaces.has_parameters())
     , n_p(spaces.stress_unknowns().get_fe().n_dofs_per_cell())
     , quadrature(2)
@@ -46,7 +49,7 @@ namespace hrcontact
     , Bc(parameters ? &B_values : &blocks.B)
     , force(dim)
     , pressure(dim)
-    , may_reuse(!stress_state && !constraint_field)
+    , may_reuse(!stress_state && !constraint_field && !cone)
     , previous_body(numbers::invalid_material_id)
     , K_vertex(n_comp, n_comp)
   {
@@ -178,6 +181,11 @@ namespace hrcontact
             for (unsigned int j = 0; j < n_s; ++j)
               sigma_q += s_loc[j] * fv_s.shape_value(j, q) * T[comp_s[j]];
           }
+        if (cone)
+          {
+            cone_term(q, JxW, cu);
+            continue;
+          }
         for (unsigned int c = 0; c < n_comp; ++c)
           for (unsigned int d = 0; d < n_comp; ++d)
             K(c, d) =
@@ -197,6 +205,28 @@ namespace hrcontact
         equilibrium_term(q, JxW);
         body_force_term(q, JxW);
       }
+  }
+
+  template <int dim>
+  void
+  CellIntegrator<dim>::cone_term(const unsigned int   q,
+                                 const double         JxW,
+                                 const cell_iterator &cu)
+  {
+    // sigma_q holds the point's strain state here.
+    SymmetricTensor<4, dim> F;
+    SymmetricTensor<2, dim> e;
+    cone->model(sigma_q, cu->material_id(), F, e);
+    for (unsigned int c = 0; c < n_comp; ++c)
+      for (unsigned int d = 0; d < n_comp; ++d)
+        K(c, d) = T[c] * (F * T[d]);
+    for (unsigned int j = 0; j < n_s; ++j)
+      psi[j] = fv_s.shape_value(j, q);
+    for (unsigned int i = 0; i < n_s; ++i)
+      (*st)(i) += psi[i] * (T[comp_s[i]] * e) * JxW;
+    compliance_term(q, JxW);
+    equilibrium_term(q, JxW);
+    body_force_term(q, JxW);
   }
 
   template <int dim>
@@ -344,7 +374,7 @@ namespace hrcontact
     // A nonlinear law at a stress state, or a stress constraint: e_c =
     // int psi : eps(sigma).
     const bool strain_term =
-      (stress_state && !material.is_linear()) || constraint_field;
+      (stress_state && !material.is_linear()) || constraint_field || cone;
     st = parameters ? &strain_values : &blocks.strain_term;
     st->reinit(strain_term ? n_s : 0);
     volume_terms(cu, material, same, strain_term);
@@ -352,8 +382,8 @@ namespace hrcontact
       constraint_term(cs);
     traction_terms(cu);
     check_loads(cu);
-    // d_c = e_c - F_c s_c (CellBlocks::strain_term).
-    if (strain_term && stress_state)
+    // d_c = e_c - F_c s_c (CellBlocks::strain_term); the cone's e_q has it.
+    if (strain_term && stress_state && !cone)
       for (unsigned int i = 0; i < n_s; ++i)
         for (unsigned int j = 0; j < n_s; ++j)
           (*st)(i) -= (*Fc)(i, j) * s_loc[j];

@@ -40,11 +40,9 @@ namespace hrcontact
     const std::function<bool(unsigned int)>       &filter,
     const std::function<void(const CellBlocks &)> &worker) const
   {
-    CellIntegrator<dim> integrator(scene,
-                                   spaces,
-                                   stress_state.get(),
-                                   constraint_field);
-    auto                cs = spaces.stress_unknowns().begin_active();
+    CellIntegrator<dim> integrator(
+      scene, spaces, stress_state.get(), constraint_field, cone);
+    auto cs = spaces.stress_unknowns().begin_active();
     for (const auto &cu :
          spaces.dof_handler_displacement.active_cell_iterators())
       {
@@ -210,12 +208,16 @@ namespace hrcontact
     const Scene<dim>       &scene_  = scene;
     const MixedSpaces<dim> &spaces_ = spaces;
     system.recompute_cell_blocks =
-      [&scene_, &spaces_, state = stress_state, field = constraint_field](
-        const std::function<bool(unsigned int)>       &filter,
-        const std::function<void(const CellBlocks &)> &worker) {
+      [&scene_,
+       &spaces_,
+       state = stress_state,
+       field = constraint_field,
+       cone  = cone](const std::function<bool(unsigned int)>       &filter,
+                    const std::function<void(const CellBlocks &)> &worker) {
         HRAssembler<dim> assembler(scene_, spaces_);
         assembler.stress_state     = state;
         assembler.constraint_field = field;
+        assembler.cone             = cone;
         assembler.for_each_cell(filter, worker);
       };
     const DoFHandler<dim> &dh_u = spaces.dof_handler_displacement;
@@ -257,7 +259,7 @@ namespace hrcontact
       state->update_ghost_values();
     stress_state = state;
     system.cell_strain_term.clear();
-    if (!scene.all_linear() || constraint_field)
+    if (!scene.all_linear() || constraint_field || cone)
       system.cell_strain_term.resize(system.n_cells());
     for_each_cell([&](const unsigned int c) { return system.is_stored(c); },
                   [&](const CellBlocks &b) {

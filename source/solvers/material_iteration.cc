@@ -54,6 +54,19 @@ namespace hrcontact
            changes[n - 2] > 0.5 * changes[n - 3];
   }
 
+  double
+  MaterialIteration::relative_change(const FieldVector &previous,
+                                     const FieldVector &current)
+  {
+    FieldVector difference;
+    difference.reinit(current, true);
+    difference.copy_locally_owned_data_from(current);
+    difference.add(-1., previous);
+    const double scale = current.linfty_norm();
+    return (scale > 0) ? difference.linfty_norm() / scale :
+                         difference.linfty_norm();
+  }
+
   void
   MaterialIteration::solve(const Operations &operations, std::ostream &log)
   {
@@ -74,18 +87,14 @@ namespace hrcontact
             "or the load exceeds what the material can carry).");
         if (steps > 1)
           {
-            FieldVector difference;
-            difference.reinit(current, true);
-            difference.copy_locally_owned_data_from(current);
-            difference.add(-1., previous);
-            const double scale  = current.linfty_norm();
-            const double change = (scale > 0) ?
-                                    difference.linfty_norm() / scale :
-                                    difference.linfty_norm();
+            const double change = operations.change ?
+                                    operations.change(previous, current) :
+                                    relative_change(previous, current);
             changes.push_back(change);
-            log << "  material step " << steps << ": stress change "
-                << std::scientific << std::setprecision(2) << change
-                << std::defaultfloat << std::setprecision(6) << std::endl;
+            log << "  material step " << steps << ": " << state_name
+                << " change " << std::scientific << std::setprecision(2)
+                << change << std::defaultfloat << std::setprecision(6)
+                << std::endl;
             if (change <= relative_tolerance)
               return;
             // Round-off of the path (the dense null-space reduction with stiff
@@ -96,10 +105,11 @@ namespace hrcontact
             if (at_roundoff(changes, roundoff_ceiling))
               {
                 roundoff_limited = true;
-                log << "  material iteration: the stress change stagnates at "
-                    << std::scientific << std::setprecision(2) << change
-                    << std::defaultfloat << std::setprecision(6)
-                    << ", above the tolerance " << relative_tolerance
+                log << "  material iteration: the " << state_name
+                    << " change stagnates at " << std::scientific
+                    << std::setprecision(2) << change << std::defaultfloat
+                    << std::setprecision(6) << ", above the tolerance "
+                    << relative_tolerance
                     << ": the round-off of the linear solves; accepted"
                     << std::endl;
                 return;
@@ -109,9 +119,10 @@ namespace hrcontact
           {
             std::ostringstream s;
             s << "Material iteration: no convergence in " << maximum_steps
-              << " Newton steps (the last stress change "
+              << " Newton steps (the last " << state_name << " change "
               << std::setprecision(3) << (changes.empty() ? 0. : changes.back())
-              << " of the largest stress, tolerance " << relative_tolerance
+              << " of the largest " << state_name << ", tolerance "
+              << relative_tolerance
               << "). Raise Material iteration/Maximum steps, or check that "
                  "the load is one the material can carry.";
             throw NotConvergedError(s.str());

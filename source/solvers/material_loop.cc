@@ -1,3 +1,4 @@
+#include <hrcontact/core/input.h>
 #include <hrcontact/discretisation/hr_assembler.h>
 #include <hrcontact/material/linear_elasticity.h>
 #include <hrcontact/solvers/material_loop.h>
@@ -60,7 +61,10 @@ namespace hrcontact
     };
     if (r.scene.stress_constraint)
       {
-        run_constrained(system, path, operations, r, log);
+        if (constraint_iteration.method == "closed-form projection")
+          run_projected(system, path, operations, r, log);
+        else
+          run_constrained(system, path, operations, r, log);
         return;
       }
     HRAssembler<dim> assembler(r.scene, r.spaces);
@@ -162,6 +166,99 @@ namespace hrcontact
     r.stress_constraint.field = constraint_field.get();
     log << "  stress constraint: " << r.stress_constraint.residuals.size()
         << " multiplier updates, " << r.material.newton_steps
+        << " material Newton steps, cracked fraction "
+        << r.stress_constraint.cracked_fraction << std::endl;
+  }
+
+  template <int dim>
+  void
+  MaterialLoop<dim>::run_projected(EquilibriumSystem            &system,
+                                   NewtonStepPath               &path,
+                                   MaterialIteration::Operations operations,
+                                   Results<dim>                 &r,
+                                   std::ostream                 &log)
+  {
+    cone = std::make_unique<GaussPointCone<dim>>(
+      *r.scene.stress_constraint,
+      r.scene,
+      r.spaces,
+      constraint_iteration.residual_stiffness);
+    HRAssembler<dim> assembler(r.scene, r.spaces);
+    assembler.cone = cone.get();
+    // The state: the point strains of the last step (zero: the first step
+    // is the elastic solve).
+    FieldVector state, stress;
+    reinit_field(state, r.spaces.stress_unknowns());
+    state.update_ghost_values();
+    double elastic_strain = 0, elastic_stress = 0, model_error = 0;
+    // Converged when the model's stresses are the law's (the strains of
+    // cracked regions need not settle: they are not unique).
+    operations.change = [&](const FieldVector &, const FieldVector &) {
+      return model_error;
+    };
+    operations.linearise_at = [&](const FieldVector &eps) {
+      state.copy_locally_owned_data_from(eps);
+      state.update_ghost_values();
+      assembler.refresh_flexibility(system, state);
+      path.flexibility_changed();
+    };
+    operations.stresses = [&](FieldVector &eps) {
+      reinit_field(stress, r.spaces.stress_unknowns());
+      path.stresses(stress);
+      cone->strains_of_solve(state, stress, eps);
+      // Relative to the largest stress of this solve or of the elastic one
+      // (a homogeneous tension ends with no stress at all).
+      const auto [error, scale] = cone->model_error(stress, eps);
+      if (elastic_stress == 0)
+        elastic_stress = scale;
+      const double reference = std::max(scale, elastic_stress);
+      model_error            = reference > 0 ? error / reference : error;
+      // A load only tension could carry has no minimiser: the cracks open
+      // a mechanism and the strains grow without bound.
+      const double largest = cone->largest_strain(eps);
+      if (elastic_strain == 0)
+        elastic_strain = largest;
+      else if (largest > 1e4 * elastic_strain)
+        throw NotConvergedError(
+          "Material/Admissible stresses = " +
+          r.scene.stress_constraint->name() +
+          ": no admissible stress field carries this load (the strains "
+          "grew to " +
+          std::to_string(largest / elastic_strain) +
+          " times the elastic ones as the cracks opened a mechanism, "
+          "material step " +
+          std::to_string(material_iteration.n_steps()) + ").");
+    };
+    operations.energy_slope = [&](const FieldVector &eps0,
+                                  const FieldVector &delta,
+                                  const double       theta,
+                                  double            *curvature) {
+      return cone->slope(eps0, delta, theta, curvature);
+    };
+    log << "  stress constraint '" << r.scene.stress_constraint->name()
+        << "' in closed form at the " << (1 << dim)
+        << " Gauss points of each cell (Newton on the point strains)"
+        << std::endl;
+    operations.linearise_at(state);
+    const double material_tolerance = material_iteration.relative_tolerance;
+    material_iteration.state_name   = "model stress";
+    material_iteration.relative_tolerance =
+      constraint_iteration.stress_tolerance;
+    solve_material_iteration(operations, r, log);
+    material_iteration.state_name         = "stress";
+    material_iteration.relative_tolerance = material_tolerance;
+    constraint_field = std::make_unique<StressConstraintField<dim>>(
+      *r.scene.stress_constraint,
+      r.spaces,
+      StressConstraintField<dim>::Points::gauss_points);
+    FieldVector last;
+    operations.stresses(last);
+    cone->store_fracture_strains(last, *constraint_field);
+    r.stress_constraint.cracked_fraction = constraint_field->cracked_fraction();
+    r.stress_constraint.largest_fracture_strain =
+      constraint_field->largest_opening();
+    r.stress_constraint.field = constraint_field.get();
+    log << "  stress constraint: " << r.material.newton_steps
         << " material Newton steps, cracked fraction "
         << r.stress_constraint.cracked_fraction << std::endl;
   }

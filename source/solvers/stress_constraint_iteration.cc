@@ -15,6 +15,42 @@ namespace hrcontact
   {
     prm.enter_subsection("Stress constraint iteration");
     prm.declare_entry(
+      "Method",
+      "augmented Lagrangian",
+      Patterns::Selection("augmented Lagrangian|closed-form projection"),
+      "How Material/Admissible stresses is imposed. augmented Lagrangian: "
+      "the paper's Steps 1-6 with multipliers at the Constraint points "
+      "below (any law, e.g. Ramberg-Osgood). closed-form projection: at "
+      "every Gauss point of the compliance, each point's stress the "
+      "projection of C eps onto the cone in closed form, solved by Newton's "
+      "method on the point strains with the consistent tangent and an "
+      "exact line search (GaussPointCone; DGQ1 stresses, a linear elastic "
+      "law). Sound everywhere the energy is evaluated and exact on "
+      "homogeneous states, but where the strains that minimise the energy "
+      "are not finite (crack fronts under a point load, an arch near its "
+      "hinges) it creeps instead of converging: doc/materials.md measures "
+      "both.");
+    prm.declare_entry(
+      "Stress tolerance",
+      "1e-6",
+      Patterns::Double(0),
+      "closed-form projection: stop when the stresses of the last Newton "
+      "model (equilibrated) and the projected stresses of its strains (in "
+      "the cone) differ nowhere by more than this times the largest stress. "
+      "Near crack fronts and in cracked regions the strains that minimise "
+      "the energy need not be finite, so the iteration converges there in "
+      "stresses only, linearly (doc/materials.md measures the steps per "
+      "tolerance).");
+    prm.declare_entry(
+      "Residual stiffness",
+      "1e-4",
+      Patterns::Double(0),
+      "closed-form projection: this times the elastic stiffness is added to "
+      "the Newton tangent (not to the stresses), so that each step's system "
+      "stays solvable where cracks open in every direction. The converged "
+      "stresses do not depend on it; larger damps the steps in cracked "
+      "regions, smaller conditions the solves worse.");
+    prm.declare_entry(
       "Initial penalty",
       "100",
       Patterns::Double(0),
@@ -46,7 +82,7 @@ namespace hrcontact
       "Constraint points",
       "vertices",
       Patterns::Selection("vertices|Gauss points|cell centres"),
-      "Where the cone is imposed. vertices: the DGQ1 stress dofs, so the "
+      "augmented Lagrangian: where the cone is imposed. vertices: the DGQ1 stress dofs, so the "
       "whole bilinear stress field of each cell is admissible (exact on "
       "homogeneous states; near free edges and crack fronts no finite "
       "fracture strains may exist and the iteration then stalls). Gauss "
@@ -66,12 +102,18 @@ namespace hrcontact
     maximum_updates    = prm.get_integer("Maximum updates");
     maximum_penalty    = prm.get_double("Maximum penalty");
     constraint_points  = prm.get("Constraint points");
+    method             = prm.get("Method");
+    residual_stiffness = prm.get_double("Residual stiffness");
+    stress_tolerance   = prm.get_double("Stress tolerance");
     prm.leave_subsection();
     if (!(initial_penalty > 0))
       throw InputError("Stress constraint iteration/Initial penalty must be "
                        "positive.");
     if (!(relative_tolerance > 0))
       throw InputError("Stress constraint iteration/Relative tolerance must "
+                       "be positive (0 would never stop).");
+    if (!(stress_tolerance > 0))
+      throw InputError("Stress constraint iteration/Stress tolerance must "
                        "be positive (0 would never stop).");
   }
 

@@ -22,6 +22,8 @@ namespace hrcontact
 {
   template <int dim>
   class StressConstraintField;
+  template <int dim>
+  class GaussPointCone;
 
   /**
    * One cell's Hellinger-Reissner blocks (section 4.2), term by term: the
@@ -40,11 +42,14 @@ namespace hrcontact
   {
   public:
     /** @p stress_state: the stresses the material is evaluated at (null:
-     * zero); @p constraint_field: a stress constraint's state, or null. */
+     * zero); @p constraint_field: a stress constraint's state, or null;
+     * @p cone: a stress constraint imposed in closed form at the Gauss
+     * points, whose strain state is then @p stress_state, or null. */
     CellIntegrator(const Scene<dim>                 &scene,
                    const MixedSpaces<dim>           &spaces,
                    const FieldVector                *stress_state,
-                   const StressConstraintField<dim> *constraint_field);
+                   const StressConstraintField<dim> *constraint_field,
+                   const GaussPointCone<dim>        *cone = nullptr);
 
     using cell_iterator =
       typename dealii::DoFHandler<dim>::active_cell_iterator;
@@ -68,6 +73,10 @@ namespace hrcontact
     /** F_c += int psi_i psi_j K(c_i, c_j) at point q. */
     void
     compliance_term(const unsigned int q, const double JxW);
+    /** The Newton model of the Gauss-point cone at point q: K = F_q, and
+     * d_c += int psi e_q (GaussPointCone::model). */
+    void
+    cone_term(const unsigned int q, const double JxW, const cell_iterator &cu);
     /** B_c += int eps(phi_i) : psi_j at point q. */
     void
     equilibrium_term(const unsigned int q, const double JxW);
@@ -94,6 +103,7 @@ namespace hrcontact
     const MixedSpaces<dim>           &spaces;
     const FieldVector                *stress_state;
     const StressConstraintField<dim> *constraint_field;
+    const GaussPointCone<dim>        *cone;
     static constexpr unsigned int     n_comp =
       MixedSpaces<dim>::n_stress_components;
     const bool                    parameters;

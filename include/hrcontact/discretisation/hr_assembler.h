@@ -15,6 +15,8 @@ namespace hrcontact
 {
   template <int dim>
   class StressConstraintField;
+  template <int dim>
+  class GaussPointCone;
 
   /**
    * Assembles the Hellinger-Reissner blocks (section 4.2): the flexibility F,
@@ -100,6 +102,14 @@ namespace hrcontact
      * its term at the constraint points to F_c and d_c. Owned by the caller.
      */
     const StressConstraintField<dim> *constraint_field = nullptr;
+
+    /**
+     * A stress constraint imposed in closed form at the Gauss points
+     * (GaussPointCone): refresh_flexibility then reads its argument as the
+     * strain state and assembles the cone's Newton model. Owned by the
+     * caller.
+     */
+    const GaussPointCone<dim> *cone = nullptr;
 
   private:
     const Scene<dim>       &scene;

@@ -57,6 +57,16 @@ namespace hrcontact
       return mu[cell * rule.size() + t];
     }
 
+    /** Sets mu at point t of a cell (GaussPointCone: its fracture
+     * strains, for output). */
+    void
+    set_multiplier(const unsigned int                     cell,
+                   const unsigned int                     t,
+                   const dealii::SymmetricTensor<2, dim> &m)
+    {
+      mu[cell * rule.size() + t] = m;
+    }
+
     /**
      * The multiplier update (eq. 48): mu <- P(mu + alpha sigma) at every
      * point of the owned and ghost cells, sigma from `stress` (its ghost

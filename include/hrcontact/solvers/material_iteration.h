@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <ostream>
+#include <string>
 #include <vector>
 
 namespace hrcontact
@@ -68,6 +69,12 @@ namespace hrcontact
       std::function<
         double(const FieldVector &, const FieldVector &, double, double *)>
         energy_slope;
+      /**
+       * Optional: the measure of convergence after a step, given the state
+       * before and after it; by default the largest change of a state
+       * entry relative to the largest entry.
+       */
+      std::function<double(const FieldVector &, const FieldVector &)> change;
     };
 
     /**
@@ -103,10 +110,17 @@ namespace hrcontact
      * fall (each above half the one before): the round-off floor of the
      * linear solves, not a slow iteration.
      */
+    /** max |current - previous| / max |current| over every process. */
+    static double
+    relative_change(const FieldVector &previous, const FieldVector &current);
+
     static bool
     at_roundoff(const std::vector<double> &changes, const double ceiling);
 
     double relative_tolerance = 1e-10;
+    /** What the state vector is, for the log ("stress"; the Gauss-point
+     * cone iterates on strains). */
+    std::string state_name = "stress";
     /** Changes below this that stop falling are round-off (see above). */
     double       roundoff_ceiling = 1e-8;
     unsigned int maximum_steps    = 100;

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <hrcontact/core/results.h>
+#include <hrcontact/discretisation/gauss_point_cone.h>
 #include <hrcontact/discretisation/stress_constraint_field.h>
 #include <hrcontact/solvers/material_iteration.h>
 #include <hrcontact/solvers/newton_step_path.h>
@@ -67,8 +68,23 @@ namespace hrcontact
                     Results<dim>                 &results,
                     std::ostream                 &log);
 
+    /**
+     * Under the stress constraint imposed in closed form at the Gauss
+     * points (GaussPointCone): the material iteration on the point strains,
+     * each step one solve with the consistent tangent and an exact line
+     * search; the fracture strains go to a Gauss-point
+     * StressConstraintField for output.
+     */
+    void
+    run_projected(EquilibriumSystem            &system,
+                  NewtonStepPath               &path,
+                  MaterialIteration::Operations operations,
+                  Results<dim>                 &results,
+                  std::ostream                 &log);
+
     StressConstraintIteration                   constraint_iteration;
     std::unique_ptr<StressConstraintField<dim>> constraint_field;
+    std::unique_ptr<GaussPointCone<dim>>        cone;
   };
 } // namespace hrcontact
 

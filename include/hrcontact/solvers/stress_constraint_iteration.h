@@ -102,6 +102,13 @@ namespace hrcontact
     double       maximum_penalty    = 1e8;
     /** Constraint points: "cell centres", "Gauss points" or "vertices". */
     std::string constraint_points = "vertices";
+    /** "closed-form projection" (GaussPointCone) or "augmented
+     * Lagrangian" (this class). */
+    std::string method = "augmented Lagrangian";
+    /** The closed-form projection's residual stiffness (GaussPointCone). */
+    double residual_stiffness = 1e-4;
+    /** The closed-form projection's tolerance on the model's stresses. */
+    double stress_tolerance = 1e-6;
 
   private:
     std::vector<double>       residuals, penalties;

@@ -1,0 +1,119 @@
+// The manufactured no-tension pier of parameters/no-tension-manufactured-
+// pier.prm (issue 54), with the cone in closed form at the Gauss points: the
+// top carries the closed form's own triangular traction (resultant N at
+// e = b/4), so the exact stress is that triangle on every section, zero on
+// the cracked strip x < b - c. At 4, 8 and 16 cells across: the iteration
+// converges to its stress tolerance; the mid-height section carries N to
+// round-off (DGQ1 on rectangles: the mid-line integral is the row average
+// that discrete equilibrium fixes) and N e to O(h^2); the compressed width is c
+// to within one cell; no Gauss point holds tension beyond the tolerance; and
+// the L2 error of sigma_yy along the section falls with every refinement.
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <hrcontact/postprocess/field_values.h>
+#include <hrcontact/postprocess/section_forces.h>
+
+#include "tests.h"
+
+using namespace hrcontact_tests;
+
+// The largest principal stress at the Gauss points of every cell, where the
+// cone is imposed, over the largest stress norm there (the scale of the
+// stress tolerance).
+double
+largest_gauss_point_stress(const hrcontact::Results<2> &res)
+{
+  const auto             &fe = *res.spaces.fe_stress;
+  const dealii::QGauss<2> points(2);
+  dealii::FEValues<2>     fv(fe, points, dealii::update_values);
+  dealii::Vector<double>  values(fe.n_dofs_per_cell());
+  double                  largest = -1e300, scale = 0;
+  for (const auto &cell : res.spaces.dof_handler_stress.active_cell_iterators())
+    {
+      fv.reinit(cell);
+      res.spaces.cell_values(cell, res.stress, values);
+      for (unsigned int t = 0; t < points.size(); ++t)
+        {
+          dealii::SymmetricTensor<2, 2> sigma;
+          for (unsigned int j = 0; j < values.size(); ++j)
+            sigma += values[j] * fv.shape_value(j, t) *
+                     hrcontact::MixedSpaces<2>::stress_basis_tensor(
+                       fe.system_to_component_index(j).first);
+          largest = std::max(largest, dealii::eigenvalues(sigma)[0]);
+          scale   = std::max(scale, sigma.norm());
+        }
+    }
+  return largest / scale;
+}
+
+int
+main()
+{
+  std::cout << std::setprecision(3);
+  const double      b = 1, e = 0.25, N = 1e5;
+  const double      c = 3 * (b / 2 - e), q = 2 * N / c;
+  const std::string pier =
+    read_file(std::string(SOURCE_DIR) +
+              "/../parameters/no-tension-manufactured-pier.prm");
+  double previous = 1e300;
+  for (const unsigned int r : {2u, 3u, 4u})
+    {
+      const auto problem = solve_from_text<2>(
+        pier +
+        "subsection Geometry\n  set Global refinements = " + std::to_string(r) +
+        "\nend\nsubsection Output\n  set Write solution = false\n"
+        "  set Output directory = results\nend\n");
+      const auto        &res   = problem->results();
+      const unsigned int cells = 1u << r;
+      const double       h     = b / cells;
+      std::cout << cells << " x " << 6 * cells
+                << " cells: converged, in at most 150 Newton steps: "
+                << (res.material.newton_steps <= 150 ? "yes" : "NO")
+                << ", the last model stress change below 1e-6: "
+                << check(res.material.changes.back(), 1e-6) << '\n';
+
+      // The section through the middle of the cell row at mid-height.
+      const double              y0 = 3 + 0.5 * h;
+      hrcontact::SectionStation station;
+      station.point  = dealii::Point<2>(b / 2, y0);
+      station.across = dealii::Tensor<1, 2>({1., 0.});
+      const auto f   = hrcontact::compute_section_forces<2>(res.spaces,
+                                                          res.stress,
+                                                          res.displacement,
+                                                          {station})
+                       .front();
+      std::cout << "  section resultant = -N to 1e-9: "
+                << check(std::abs(f.N + N) / N, 1e-9)
+                << ", moment / (N e) = " << f.M / (N * e)
+                << ", within h^2 / 10 of 1: "
+                << check(std::abs(f.M / (N * e) - 1), 0.1 * h * h) << '\n';
+      // sigma_yy along the section against the triangle.
+      const unsigned int n     = 4000;
+      double             width = 0, error = 0, norm = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double x = (i + 0.5) * b / n;
+          const double s =
+            hrcontact::point_value(res, dealii::Point<2>(x, y0), "syy");
+          const double exact = (x > b - c) ? -q * (x - (b - c)) / c : 0.;
+          error += (s - exact) * (s - exact);
+          norm += exact * exact;
+          if (s < -1e-3 * q)
+            width += b / n;
+        }
+      error = std::sqrt(error / norm);
+      std::cout << "  compressed width within one cell of c: "
+                << check(std::abs(width - c), h)
+                << ", tension at any Gauss point below the tolerance (1e-6 of "
+                << "the largest stress): "
+                << check(largest_gauss_point_stress(res), 1e-6)
+                << "\n  L2 error of sigma_yy on the section " << error
+                << ", below the coarser mesh's: "
+                << (error < previous ? "yes" : "NO") << std::endl;
+      previous = error;
+    }
+}
