@@ -25,11 +25,7 @@ template <int dim>
 std::unique_ptr<StressConstraint<dim>>
 make(const std::string &name)
 {
-  ParameterHandler prm;
-  StressConstraintFactory<dim>::declare_parameters(prm);
-  prm.parse_input_from_string(
-    "subsection Material\n  set Admissible stresses = " + name + "\nend\n");
-  return StressConstraintFactory<dim>::create(prm);
+  return hrcontact_tests::make_stress_constraint<dim>(name);
 }
 
 template <int dim>

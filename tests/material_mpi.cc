@@ -50,12 +50,7 @@ namespace
     const bool  distributed =
       dynamic_cast<const dealii::parallel::distributed::Triangulation<2> *>(
         &P.triangulation()) != nullptr;
-    double history =
-      (P.material.changes.size() == S.material.changes.size()) ? 0. : 1.;
-    for (unsigned int k = 0; history < 1 && k < P.material.changes.size(); ++k)
-      history =
-        std::max(history,
-                 std::abs(P.material.changes[k] - S.material.changes[k]));
+    double history = history_difference(P.material.changes, S.material.changes);
     const double moment_difference =
       std::abs(end_moment(P) - end_moment(S)) / std::abs(end_moment(S));
     // Every process compares its own run: the worst of them counts.

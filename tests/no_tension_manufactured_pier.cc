@@ -77,15 +77,8 @@ main()
                 << check(res.material.changes.back(), 1e-6) << '\n';
 
       // The section through the middle of the cell row at mid-height.
-      const double              y0 = 3 + 0.5 * h;
-      hrcontact::SectionStation station;
-      station.point  = dealii::Point<2>(b / 2, y0);
-      station.across = dealii::Tensor<1, 2>({1., 0.});
-      const auto f   = hrcontact::compute_section_forces<2>(res.spaces,
-                                                          res.stress,
-                                                          res.displacement,
-                                                          {station})
-                       .front();
+      const double y0 = 3 + 0.5 * h;
+      const auto   f  = horizontal_section(res, dealii::Point<2>(b / 2, y0));
       std::cout << "  section resultant = -N to 1e-9: "
                 << check(std::abs(f.N + N) / N, 1e-9)
                 << ", moment / (N e) = " << f.M / (N * e)

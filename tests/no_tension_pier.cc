@@ -50,15 +50,8 @@ main()
       print_kkt(*problem);
 
       // The section through the middle of the cell row at mid-height.
-      const double              y0 = 3 + 0.5 / (1 << r);
-      hrcontact::SectionStation station;
-      station.point  = dealii::Point<2>(b / 2, y0);
-      station.across = dealii::Tensor<1, 2>({1., 0.});
-      const auto f   = hrcontact::compute_section_forces<2>(res.spaces,
-                                                          res.stress,
-                                                          res.displacement,
-                                                          {station})
-                       .front();
+      const double y0 = 3 + 0.5 / (1 << r);
+      const auto   f  = horizontal_section(res, dealii::Point<2>(b / 2, y0));
       std::cout << "  section resultant = -N to 1e-10: "
                 << check(std::abs(f.N + N) / N, 1e-10)
                 << "\n  section moment / (N e) = " << -f.M / (N * e)

@@ -7,6 +7,8 @@
 
 #include <hrcontact/core/hr_problem.h>
 #include <hrcontact/core/run.h>
+#include <hrcontact/material/stress_constraint.h>
+#include <hrcontact/postprocess/section_forces.h>
 
 #include <algorithm>
 #include <array>
@@ -17,6 +19,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace hrcontact_tests
 {
@@ -374,6 +377,46 @@ namespace hrcontact_tests
       force[system.dof_component(row.combination[k].first)] +=
         value * row.direction_component(k);
     return force;
+  }
+
+  /** The forces on the horizontal section of a 2D body through `point`
+   * (compute_section_forces, `across` along x). */
+  inline hrcontact::SectionForce
+  horizontal_section(const hrcontact::Results<2> &res,
+                     const dealii::Point<2>      &point)
+  {
+    hrcontact::SectionStation station;
+    station.point  = point;
+    station.across = dealii::Tensor<1, 2>({1., 0.});
+    return hrcontact::compute_section_forces<2>(res.spaces,
+                                                res.stress,
+                                                res.displacement,
+                                                {station})
+      .front();
+  }
+
+  /** The stress constraint Material/Admissible stresses = name makes. */
+  template <int dim>
+  std::unique_ptr<hrcontact::StressConstraint<dim>>
+  make_stress_constraint(const std::string &name)
+  {
+    dealii::ParameterHandler prm;
+    hrcontact::StressConstraintFactory<dim>::declare_parameters(prm);
+    prm.parse_input_from_string(
+      "subsection Material\n  set Admissible stresses = " + name + "\nend\n");
+    return hrcontact::StressConstraintFactory<dim>::create(prm);
+  }
+
+  /** max |a_k - b_k| of two step histories; 1 if their lengths differ. */
+  inline double
+  history_difference(const std::vector<double> &a, const std::vector<double> &b)
+  {
+    if (a.size() != b.size())
+      return 1;
+    double d = 0;
+    for (unsigned int k = 0; k < a.size(); ++k)
+      d = std::max(d, std::abs(a[k] - b[k]));
+    return d;
   }
 } // namespace hrcontact_tests
 
