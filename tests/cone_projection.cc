@@ -21,12 +21,6 @@ using namespace dealii;
 using namespace hrcontact;
 using hrcontact_tests::check;
 
-template <int dim>
-std::unique_ptr<StressConstraint<dim>>
-make(const std::string &name)
-{
-  return hrcontact_tests::make_stress_constraint<dim>(name);
-}
 
 template <int dim>
 std::array<double, dim>
@@ -48,7 +42,7 @@ run(const std::string &name, const double sign, const std::string &plane)
   double       lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
   if (plane == "plane stress")
     lambda = 2 * lambda * G / (lambda + 2 * G);
-  const auto cone = make<dim>(name);
+  const auto cone = hrcontact_tests::make_stress_constraint<dim>(name);
   std::cout << dim << "D '" << name << "'"
             << (dim == 2 ? " (" + plane + ")" : "") << std::endl;
 

@@ -18,12 +18,6 @@ using namespace dealii;
 using namespace hrcontact;
 using hrcontact_tests::check;
 
-template <int dim>
-std::unique_ptr<StressConstraint<dim>>
-make(const std::string &name)
-{
-  return hrcontact_tests::make_stress_constraint<dim>(name);
-}
 
 template <int dim>
 SymmetricTensor<2, dim>
@@ -56,7 +50,7 @@ template <int dim>
 void
 run(const std::string &name, const double sign)
 {
-  const auto constraint = make<dim>(name);
+  const auto constraint = hrcontact_tests::make_stress_constraint<dim>(name);
   std::cout << dim << "D '" << constraint->name() << "'\n";
   double moreau = 0, cones = 0, orthogonal = 0, derivative = 0, symmetric = 0,
          bounded = 0, together = 0;
@@ -146,10 +140,13 @@ main()
   run<3>("no tension", 1);
   run<3>("no compression", -1);
   std::cout << "'any' gives no constraint: "
-            << (make<2>("any") == nullptr ? "yes" : "NO") << '\n';
+            << (hrcontact_tests::make_stress_constraint<2>("any") == nullptr ?
+                  "yes" :
+                  "NO")
+            << '\n';
   try
     {
-      make<2>("no shear");
+      hrcontact_tests::make_stress_constraint<2>("no shear");
       std::cout << "unknown name NOT refused\n";
     }
   catch (const InputError &e)

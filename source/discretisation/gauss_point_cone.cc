@@ -94,11 +94,12 @@ namespace hrcontact
   {
     const auto [lambda, G] = lame(body);
     constraint.elastic_projection(eps, lambda, G, sigma, tangent, nullptr);
-    const auto                    I = unit_symmetric_tensor<dim>();
-    const SymmetricTensor<4, dim> C =
-      lambda * outer_product(I, I) + 2 * G * identity_tensor<dim>();
     if (tangent)
-      *tangent += residual_stiffness * C;
+      {
+        const auto I = unit_symmetric_tensor<dim>();
+        *tangent += residual_stiffness * (lambda * outer_product(I, I) +
+                                          2 * G * identity_tensor<dim>());
+      }
   }
 
   template <int dim>
@@ -229,10 +230,10 @@ namespace hrcontact
                      s += JxW * (sigma * at[1]);
                      if (curvature)
                        {
-                         SymmetricTensor<4, dim> F;
-                         SymmetricTensor<2, dim> e;
-                         model(at[0], cell->material_id(), F, e);
-                         c += JxW * (at[1] * (invert(F) * at[1]));
+                         // The model's tangent D_q + eta C at eps0.
+                         SymmetricTensor<4, dim> D;
+                         point_stress(at[0], cell->material_id(), sigma, &D);
+                         c += JxW * (at[1] * (D * at[1]));
                        }
                    });
     const MPI_Comm comm =

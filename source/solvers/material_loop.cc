@@ -61,7 +61,8 @@ namespace hrcontact
     };
     if (r.scene.stress_constraint)
       {
-        if (constraint_iteration.method == "closed-form projection")
+        if (constraint_iteration.method ==
+            StressConstraintIteration::Method::closed_form_projection)
           run_projected(system, path, operations, r, log);
         else
           run_constrained(system, path, operations, r, log);

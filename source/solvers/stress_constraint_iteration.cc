@@ -102,7 +102,11 @@ namespace hrcontact
     maximum_updates    = prm.get_integer("Maximum updates");
     maximum_penalty    = prm.get_double("Maximum penalty");
     constraint_points  = prm.get("Constraint points");
-    method             = prm.get("Method");
+    method             = get_selection<Method>(
+      prm,
+      "Method",
+      {{"augmented Lagrangian", Method::augmented_lagrangian},
+                   {"closed-form projection", Method::closed_form_projection}});
     residual_stiffness = prm.get_double("Residual stiffness");
     stress_tolerance   = prm.get_double("Stress tolerance");
     prm.leave_subsection();

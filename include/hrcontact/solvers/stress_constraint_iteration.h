@@ -102,9 +102,15 @@ namespace hrcontact
     double       maximum_penalty    = 1e8;
     /** Constraint points: "cell centres", "Gauss points" or "vertices". */
     std::string constraint_points = "vertices";
-    /** "closed-form projection" (GaussPointCone) or "augmented
-     * Lagrangian" (this class). */
-    std::string method = "augmented Lagrangian";
+    /** How the cone is imposed (Method). */
+    enum class Method
+    {
+      /** This class: multipliers at the Constraint points. */
+      augmented_lagrangian,
+      /** GaussPointCone: in closed form at the Gauss points. */
+      closed_form_projection
+    };
+    Method method = Method::augmented_lagrangian;
     /** The closed-form projection's residual stiffness (GaussPointCone). */
     double residual_stiffness = 1e-4;
     /** The closed-form projection's tolerance on the model's stresses. */
