@@ -3,6 +3,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <hrcontact/constraints/curved_obstacles.h>
+#include <hrcontact/discretisation/hanging_nodes.h>
 #include <hrcontact/discretisation/hr_assembler.h>
 #include <hrcontact/discretisation/row_classification.h>
 #include <hrcontact/solvers/newton_step_path.h>
@@ -255,6 +256,8 @@ namespace hrcontact
                   ++next;
                 }
           }
+        // The hanging shares follow the rows' new coefficients.
+        add_hanging_shares(system);
         if (changed)
           path.rows_changed();
         return changed;

@@ -163,7 +163,8 @@ namespace hrcontact
          AugmentedLagrangianSolver::Regularisation::displacement,
        scene.has_changing_rows(),
        mesh.distributed(),
-       MaterialLoop<dim>::iterates(scene)},
+       MaterialLoop<dim>::iterates(scene),
+       system.n_hanging_dofs > 0},
       log);
     const bool condensed = (r.solve.path == SolutionPath::condensed);
     {

@@ -33,6 +33,11 @@ namespace hrcontact
       scene.distortion != 0                      ? "Geometry/Distortion" :
       needs.postprocessor_walks_mesh ? "a postprocessor walks across it" :
                                        "";
+    if (n_processes > 1 && scene.local_refinement.active())
+      throw InputError(
+        "Mesh refinement/Region refinements: a locally refined mesh runs on "
+        "one process for now (its hanging nodes are not yet shared between "
+        "processes); run it serially.");
     distributed_mesh = n_processes > 1 && replicated_reason.empty();
     if (distributed_mesh)
       mesh = std::make_unique<parallel::distributed::Triangulation<dim>>(

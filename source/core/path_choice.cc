@@ -98,8 +98,13 @@ namespace hrcontact
         "Contact/Update curved obstacles = true needs Equilibrium "
         "reduction/Path = condensed (or automatic): the null-space "
         "reduction is built once from the initial constraint directions.");
-    const bool forced_condensed =
-      needs.displacement_al || needs.relinearise || needs.distributed_mesh;
+    if (needs.hanging_nodes && setting == Setting::null_space)
+      throw InputError(
+        "Mesh refinement: a locally refined mesh (hanging nodes) needs "
+        "Equilibrium reduction/Path = condensed (or automatic): the "
+        "null-space reduction has no hanging-node constraints.");
+    const bool forced_condensed = needs.displacement_al || needs.relinearise ||
+                                  needs.distributed_mesh || needs.hanging_nodes;
     // Automatic: the paper's dense reduction while it fits, but not for a
     // material iteration.
     std::string  why;

@@ -86,6 +86,7 @@ namespace hrcontact
     }
     prm.leave_subsection();
 
+    LocalRefinement<dim>::declare_parameters(prm);
     MaterialLawFactory<dim>::declare_parameters(prm);
     StressConstraintFactory<dim>::declare_parameters(prm);
 
@@ -137,6 +138,12 @@ namespace hrcontact
       rotation_degrees   = prm.get_double("Rotation angle");
     }
     prm.leave_subsection();
+    local_refinement.parse_parameters(prm, constants);
+    if (local_refinement.active() && distortion != 0)
+      throw InputError("Geometry/Distortion with Mesh refinement/Region "
+                       "refinements: a distortion would move the hanging "
+                       "nodes off their parents' edges; use one or the "
+                       "other.");
 
     material          = MaterialLawFactory<dim>::create(prm, constants);
     stress_constraint = StressConstraintFactory<dim>::create(prm);
@@ -240,7 +247,25 @@ namespace hrcontact
   void
   Scene<dim>::create_mesh(Triangulation<dim> &triangulation) const
   {
-    grid->create(triangulation, global_refinements);
+    if (!local_refinement.active())
+      grid->create(triangulation, global_refinements);
+    else if (grid->create_coarse(triangulation))
+      {
+        // Refined where the grid refines (its manifolds), then moved as
+        // the grid moves its refined vertices.
+        triangulation.refine_global(global_refinements);
+        const auto place = grid->refined_vertex_map();
+        local_refinement.apply(triangulation, place);
+        GridTools::transform(place, triangulation);
+        LocalRefinement<dim>::centre_hanging_vertices(triangulation);
+      }
+    else
+      {
+        grid->create(triangulation, global_refinements);
+        local_refinement.apply(triangulation,
+                               [](const Point<dim> &x) { return x; });
+        LocalRefinement<dim>::centre_hanging_vertices(triangulation);
+      }
 
     if (distortion > 0)
       GridTools::distort_random(distortion, triangulation, true, 20261121);

@@ -17,9 +17,10 @@ namespace hrcontact
                                        const double          coefficient,
                                        Vector<double>       &v) const
   {
-    for (const auto &[dof, c] : row.combination)
-      for (auto it = B.begin(b_row(dof)); it != B.end(b_row(dof)); ++it)
-        v[it->column()] += coefficient * c * it->value();
+    for (const auto *terms : {&row.combination, &row.shares})
+      for (const auto &[dof, c] : *terms)
+        for (auto it = B.begin(b_row(dof)); it != B.end(b_row(dof)); ++it)
+          v[it->column()] += coefficient * c * it->value();
   }
 
   namespace
@@ -106,14 +107,23 @@ namespace hrcontact
                              for (unsigned int j = 0; j < ds.size(); ++j)
                                residual[du[i]] += b.B(i, j) * s[ds[j]];
                          });
+    // The conforming test space: each hanging dof's equation goes to its
+    // parents (T^T (B s - f)).
+    for (const auto &line : hanging_nodes.get_lines())
+      {
+        for (const auto &[parent, a] : line.entries)
+          residual[parent] += a * residual[line.index];
+        residual[line.index] = 0;
+      }
   }
 
   double
   EquilibriumSystem::row_load(const EquilibriumRow &row) const
   {
     double sum = 0;
-    for (const auto &[dof, c] : row.combination)
-      sum += c * load[dof];
+    for (const auto *terms : {&row.combination, &row.shares})
+      for (const auto &[dof, c] : *terms)
+        sum += c * load[dof];
     return sum;
   }
 

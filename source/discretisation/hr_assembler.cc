@@ -62,10 +62,12 @@ namespace hrcontact
     mark_stored_cells(EquilibriumSystem &system, const DoFHandler<dim> &dh_u)
     {
       std::vector<bool> constrained(dh_u.n_dofs(), false);
+      // A row's hanging shares read the cells around those hanging nodes.
       for (const auto &row : system.rows)
         if (row.row_class != RowClass::free)
-          for (const auto &[dof, c] : row.combination)
-            constrained[dof] = true;
+          for (const auto *terms : {&row.combination, &row.shares})
+            for (const auto &[dof, c] : *terms)
+              constrained[dof] = true;
       system.stored_cell.assign(dh_u.get_triangulation().n_active_cells(),
                                 false);
       std::vector<types::global_dof_index> du;

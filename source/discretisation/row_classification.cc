@@ -1,5 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
+#include <deal.II/dofs/dof_tools.h>
+
 #include <deal.II/fe/fe_values.h>
 
 #include <deal.II/lac/full_matrix.h>
@@ -7,6 +9,7 @@
 #include <deal.II/distributed/tria_base.h>
 
 #include <hrcontact/core/input.h>
+#include <hrcontact/discretisation/hanging_nodes.h>
 #include <hrcontact/discretisation/row_classification.h>
 
 #include <algorithm>
@@ -384,6 +387,13 @@ namespace hrcontact
     system.n_stress_dofs        = spaces.stress_unknowns().n_dofs();
     const unsigned int n_nodes  = dh_u.n_dofs() / dim;
     read_node_coordinates(system);
+    find_hanging_nodes(dh_u,
+                       DoFTools::extract_locally_relevant_dofs(dh_u),
+                       system);
+    // A hanging node has no rows: its displacement follows its parents'.
+    auto hanging = [&](const unsigned int node) {
+      return is_hanging(system, node_dof<dim>(node, 0));
+    };
 
     // The boundary faces some constraint kind acts on. A distributed mesh:
     // every process classifies the whole boundary (a surface), so that the
@@ -431,12 +441,17 @@ namespace hrcontact
     // Lean rows: only the nodes some face touched can have explicit rows.
     if (lean_rows)
       for (const auto &[node, c] : constraints)
-        classify_node(node, c, system, lean_rows);
+        {
+          if (!hanging(node))
+            classify_node(node, c, system, lean_rows);
+        }
     else
       {
         const NodeConstraints<dim> none;
         for (unsigned int node = 0; node < n_nodes; ++node)
           {
+            if (hanging(node))
+              continue;
             const auto it = constraints.find(node);
             classify_node(node,
                           it == constraints.end() ? none : it->second,
@@ -448,15 +463,17 @@ namespace hrcontact
     // every node has its rows.
     for (const auto &source : scene.constraints)
       source->couple_rows(system);
+    add_hanging_shares(system);
     if (lean_rows)
-      system.n_free_rows = system.n_displacement_dofs -
-                           system.contact_rows.size() -
-                           system.prescribed_rows.size();
+      system.n_free_rows =
+        system.n_displacement_dofs - system.contact_rows.size() -
+        system.prescribed_rows.size() - system.n_hanging_dofs;
     AssertThrow(system.contact_rows.size() + system.prescribed_rows.size() +
-                    system.n_free_rows ==
+                    system.n_free_rows + system.n_hanging_dofs ==
                   system.n_displacement_dofs,
                 ExcInternalError());
-    AssertThrow(lean_rows || system.rows.size() == system.n_displacement_dofs,
+    AssertThrow(lean_rows || system.rows.size() + system.n_hanging_dofs ==
+                               system.n_displacement_dofs,
                 ExcInternalError());
   }
 

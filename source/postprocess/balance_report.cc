@@ -1,3 +1,4 @@
+#include <hrcontact/discretisation/hanging_nodes.h>
 #include <hrcontact/postprocess/balance_report.h>
 #include <hrcontact/postprocess/sorted_rows.h>
 
@@ -127,12 +128,20 @@ namespace hrcontact
           load[system.dof_component(row.combination[k].first)] +=
             f_r * row.direction_component(k);
       }
-    // Lean rows: the implicit free rows are the unit rows of the other dofs.
+    // Lean rows: the implicit free rows are the unit rows of the other dofs,
+    // each carrying its hanging children's shares (an explicit row has its
+    // own, EquilibriumRow::shares); a hanging dof has no row.
+    std::vector<double> shares(stored.size(), 0.);
+    for (const auto &line : system.hanging_nodes.get_lines())
+      for (const auto &[parent, a] : line.entries)
+        if (parent < shares.size())
+          shares[parent] += a * system.load[line.index];
     for (unsigned int i = 0; i < stored.size(); ++i)
-      if (!stored[i] && mine(i))
+      if (!stored[i] && mine(i) && !is_hanging(system, i))
         {
-          scale = std::max(scale, std::abs(system.load[i]));
-          load[system.dof_component(i)] += system.load[i];
+          const double f_i = system.load[i] + shares[i];
+          scale            = std::max(scale, std::abs(f_i));
+          load[system.dof_component(i)] += f_i;
         }
     if (distributed)
       {

@@ -38,6 +38,9 @@ namespace hrcontact
     /** A nonlinear law or a stress constraint: automatic takes condensed
      * (dozens of Newton steps, each a dense solve on the null-space path). */
     bool material_iteration = false;
+    /** A locally refined mesh: its hanging nodes are constraints of the
+     * displacement solve, which the null-space reduction does not have. */
+    bool hanging_nodes = false;
   };
 
   /**

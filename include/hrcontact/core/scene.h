@@ -9,6 +9,7 @@
 
 #include <hrcontact/constraints/constraint_source.h>
 #include <hrcontact/core/input.h>
+#include <hrcontact/geometry/local_refinement.h>
 #include <hrcontact/geometry/mesh_generator.h>
 #include <hrcontact/geometry/tunnel_lining.h>
 #include <hrcontact/material/material_law.h>
@@ -79,6 +80,8 @@ namespace hrcontact
     unsigned int                        global_refinements = 0;
     double                              distortion         = 0;
     double                              rotation_degrees   = 0;
+    /** Mesh refinement/: cells refined again in a box (hanging nodes). */
+    LocalRefinement<dim> local_refinement;
 
     /** The material law (Material/Model), read with the scene. */
     std::shared_ptr<const MaterialLaw<dim>> material;

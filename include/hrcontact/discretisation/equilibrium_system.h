@@ -5,6 +5,7 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/types.h>
 
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -72,6 +73,16 @@ namespace hrcontact
      * says, regularised as the solver is set up.
      */
     std::shared_ptr<const ConstraintLaw> law;
+    /**
+     * The hanging dofs whose equilibrium equations this row carries (a
+     * locally refined mesh), with their weights sum_j c_j a_hj: the
+     * conforming test function of the row is that of its node plus a_hj
+     * times each hanging node's that depends on it. Force-like quantities
+     * (B~_r s, f~_r) include them; the direction (kinematic) does not, as a
+     * hanging node's displacement follows its parents'. Empty on a uniform
+     * mesh.
+     */
+    std::vector<std::pair<dealii::types::global_dof_index, double>> shares;
   };
 
   /** The blocks of one cell as the assembler computes them (section 4.2). */
@@ -221,6 +232,16 @@ namespace hrcontact
 
     std::vector<EquilibriumRow> rows;
     std::vector<unsigned int>   free_rows, contact_rows, prescribed_rows;
+    /**
+     * The hanging-node constraints of a locally refined mesh (u_h = sum_j
+     * a_hj u_j, on this process's relevant dofs), closed; empty on a
+     * uniform mesh. A hanging dof has no row of its own: its equation is
+     * shared among its parents' rows (EquilibriumRow::shares), and every
+     * displacement solve imposes these constraints.
+     */
+    dealii::AffineConstraints<double> hanging_nodes;
+    /** The number of hanging dofs of the whole mesh. */
+    unsigned int n_hanging_dofs = 0;
     /** Complete on a serial mesh; on a distributed one this process's
      * nodes and the constrained boundary's (NodeCoordinates). */
     NodeCoordinates node_coordinates;
@@ -265,7 +286,9 @@ namespace hrcontact
     /**
      * B s - f over every cell, from storage or recomputed: the equilibrium
      * residual of any row, for checks on a serial mesh (f complete). A lean
-     * system evaluates every cell again.
+     * system evaluates every cell again. On a locally refined mesh the
+     * conforming residual T^T (B s - f): each hanging dof's entry added to
+     * its parents' (EquilibriumRow::shares) and zero itself.
      */
     void
     equilibrium_residual(const dealii::Vector<double> &s,
@@ -280,9 +303,10 @@ namespace hrcontact
     row_times(const EquilibriumRow &row, const VectorType &s) const
     {
       double sum = 0;
-      for (const auto &[dof, c] : row.combination)
-        for (auto it = B.begin(b_row(dof)); it != B.end(b_row(dof)); ++it)
-          sum += c * it->value() * s(it->column());
+      for (const auto *terms : {&row.combination, &row.shares})
+        for (const auto &[dof, c] : *terms)
+          for (auto it = B.begin(b_row(dof)); it != B.end(b_row(dof)); ++it)
+            sum += c * it->value() * s(it->column());
       return sum;
     }
 

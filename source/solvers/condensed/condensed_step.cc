@@ -148,8 +148,24 @@ namespace hrcontact
     system.for_each_cell_dofs(
       [&](const unsigned int c) { return bool(partition.owned_cell[c]); },
       [&](const unsigned int, const std::vector<types::global_dof_index> &du) {
+        if (system.n_hanging_dofs == 0)
+          {
+            for (const auto i : du)
+              for (const auto j : du)
+                dsp.add(i, j);
+            return;
+          }
+        // A hanging dof couples the cell to every dof of its parents'
+        // nodes: a held row there may express one component by another.
+        std::vector<types::global_dof_index> dofs = du;
         for (const auto i : du)
-          for (const auto j : du)
+          if (system.hanging_nodes.is_constrained(i))
+            for (const auto &[parent, a] :
+                 *system.hanging_nodes.get_constraint_entries(i))
+              for (unsigned int d = 0; d < system.dim; ++d)
+                dofs.push_back(system.dim * system.dof_node(parent) + d);
+        for (const auto i : dofs)
+          for (const auto j : dofs)
             dsp.add(i, j);
       });
     // A Q row over the dofs of several nodes (a contact pair) couples

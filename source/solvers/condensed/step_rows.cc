@@ -39,6 +39,12 @@ namespace hrcontact
     auto relevant = [&](const EquilibriumRow &row) {
       return partition.relevant.is_element(row.combination.front().first);
     };
+    // The hanging nodes follow their parents in every solve.
+    for (const auto &line : system.hanging_nodes.get_lines())
+      {
+        constraints.add_line(line.index);
+        constraints.add_entries(line.index, line.entries);
+      }
     // Held rows per node: the prescribed ones and the held Q rows; springs.
     std::map<unsigned int, std::vector<HeldRow>> held;
     std::map<unsigned int, unsigned int>         held_q_rows;

@@ -7,6 +7,29 @@ namespace hrcontact
 {
   using namespace dealii;
 
+  namespace
+  {
+    /** A row's terms: its combination, then its hanging shares (in the
+     * order of EquilibriumSystem::row_times). */
+    unsigned int
+    n_terms(const EquilibriumRow &row)
+    {
+      return row.combination.size() + row.shares.size();
+    }
+    types::global_dof_index
+    term_dof(const EquilibriumRow &row, const unsigned int k)
+    {
+      const unsigned int n = row.combination.size();
+      return k < n ? row.combination[k].first : row.shares[k - n].first;
+    }
+    double
+    coefficient(const EquilibriumRow &row, const unsigned int k)
+    {
+      const unsigned int n = row.combination.size();
+      return k < n ? row.combination[k].second : row.shares[k - n].second;
+    }
+  } // namespace
+
   StressRecovery::StressRecovery(const EquilibriumSystem &system,
                                  const DofPartition      &partition)
     : system(system)
@@ -63,12 +86,15 @@ namespace hrcontact
     std::map<types::global_dof_index, std::size_t> position;
     for (const unsigned int r : system.contact_rows)
       if (owned_row(system.rows[r]))
-        for (const auto &[dof, c] : system.rows[r].combination)
-          if (c != 0) // a contact pair's master entries
-            for (auto it = system.B.begin(system.b_row(dof));
-                 it != system.B.end(system.b_row(dof));
-                 ++it)
-              position.emplace(it->column(), none);
+        for (unsigned int k = 0; k < n_terms(system.rows[r]); ++k)
+          if (coefficient(system.rows[r], k) != 0) // a pair's master entries
+            {
+              const auto dof = term_dof(system.rows[r], k);
+              for (auto it = system.B.begin(system.b_row(dof));
+                   it != system.B.end(system.b_row(dof));
+                   ++it)
+                position.emplace(it->column(), none);
+            }
     for (unsigned int k = 0; k < cells.size(); ++k)
       {
         const auto &ds = system.cell_stress_dofs[cells[k]];
@@ -86,10 +112,10 @@ namespace hrcontact
       {
         const EquilibriumRow &row = system.rows[r];
         if (owned_row(row) && with_rows)
-          for (unsigned int k = 0; k < row.combination.size(); ++k)
+          for (unsigned int k = 0; k < n_terms(row); ++k)
             {
-              const auto dof = row.combination[k].first;
-              if (row.combination[k].second == 0)
+              const auto dof = term_dof(row, k);
+              if (coefficient(row, k) == 0)
                 continue;
               for (auto it = system.B.begin(system.b_row(dof));
                    it != system.B.end(system.b_row(dof));
@@ -142,8 +168,7 @@ namespace hrcontact
         for (std::size_t t = term_start[i]; t < term_start[i + 1]; ++t)
           {
             const StressTerm &term = terms[t];
-            sum +=
-              row.combination[term.k].second * term.b * stress[term.position];
+            sum += coefficient(row, term.k) * term.b * stress[term.position];
           }
         p[i] = sum - system.row_load(row);
       }

@@ -110,13 +110,17 @@ namespace hrcontact
     dsp.reinit(0, 0);
     rhs.reinit(partition.owned, partition.communicator);
     x.reinit(partition.owned, partition.communicator);
-    // The cells at Q and H rows are kept; every other cell goes into the
-    // fixed part of K.
+    // The cells at Q and H rows are kept (also those around a hanging node
+    // whose parent has one: it follows the held rows); every other cell
+    // goes into the fixed part of K, through the hanging nodes'
+    // constraints where it has one.
     std::vector<bool> at_row(system.n_displacement_dofs, false);
     for (const auto *rows : {&system.contact_rows, &system.prescribed_rows})
       for (const unsigned int r : *rows)
-        for (const auto &[dof, c] : system.rows[r].combination)
-          at_row[dof] = true;
+        for (const auto *terms :
+             {&system.rows[r].combination, &system.rows[r].shares})
+          for (const auto &[dof, c] : *terms)
+            at_row[dof] = true;
     auto                                &fixed = matrix;
     std::vector<types::global_dof_index> kept_dofs;
     std::vector<double>                  kept_stiffness;
@@ -135,7 +139,10 @@ namespace hrcontact
               kept_stiffness.push_back(K_cell(i, j));
           return;
         }
-      fixed.add(du, K_cell);
+      if (system.n_hanging_dofs > 0)
+        system.hanging_nodes.distribute_local_to_global(K_cell, du, fixed);
+      else
+        fixed.add(du, K_cell);
     });
     fixed.compress(VectorOperation::add);
 

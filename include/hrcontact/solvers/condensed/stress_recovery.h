@@ -89,7 +89,8 @@ namespace hrcontact
     std::vector<double> shift;
     /**
      * p = Q s - q without a global stress vector: for each Q row this
-     * process owns, its terms (the index k into the row's combination, the
+     * process owns, its terms (the index k into the row's combination and
+     * then its hanging shares, the
      * position in `stress`, the entry of B) in the order of
      * EquilibriumSystem::row_times, so that the sums are the same to the
      * last bit; the row's coefficients are read at each step (rows that
