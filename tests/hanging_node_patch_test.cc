@@ -85,48 +85,22 @@ void
 patch(const std::string &element)
 {
   std::cout << "dim = " << dim << ", stress element " << element << std::endl;
-  const double E = 1000, nu = 0.3;
-  double       s[3][3] = {{3., 1.5, -0.7}, {1.5, -2., 0.4}, {-0.7, 0.4, 0.5}};
-  if (dim == 2)
-    s[2][2] = nu * (s[0][0] + s[1][1]); // plane strain: eps_zz = 0
-  const double trace = s[0][0] + s[1][1] + s[2][2];
-  double       eps[3][3];
-  for (unsigned int a = 0; a < 3; ++a)
-    for (unsigned int b = 0; b < 3; ++b)
-      eps[a][b] = ((1 + nu) * s[a][b] - (a == b ? nu * trace : 0.)) / E;
-  std::ostringstream reference, normal;
-  reference << std::setprecision(17);
-  normal << std::setprecision(17);
-  for (unsigned int c = 0; c < hrcontact::MixedSpaces<dim>::n_stress_components;
-       ++c)
-    {
-      const auto ab = hrcontact::MixedSpaces<dim>::stress_component_indices(c);
-      reference << (c ? "; " : "") << s[ab.first][ab.second];
-      normal << (c ? "; " : "") << (c < dim ? s[c][c] : 0.);
-    }
+  double s[3][3], eps[3][3];
+  patch_state<dim>(1000, 0.3, s, eps);
+  const std::string reference = stress_reference<dim>(s),
+                    normal    = stress_reference<dim>(s, true);
   report<dim>("displacement patch",
               *solve_from_text<dim>(
                 block_text<dim>(element,
                                 region<dim>(),
                                 linear_displacement_supports<dim>(eps),
-                                reference.str())),
-              reference.str());
-  std::ostringstream t;
-  t << std::setprecision(17) << "subsection Supports\n"
-    << "  set Prescribed displacements = 0 x: 0 | 2 y: 0"
-    << (dim == 3 ? " | 4 z: 0" : "") << "\nend\n"
-    << "subsection Loads\n  set Tractions = ";
-  for (unsigned int d = 0; d < dim; ++d)
-    {
-      t << (d ? " | " : "") << 2 * d + 1 << ": ";
-      for (unsigned int a = 0; a < dim; ++a)
-        t << (a ? "; " : "") << (a == d ? s[d][d] : 0.);
-    }
-  t << "\nend\n";
-  report<dim>("traction patch",
-              *solve_from_text<dim>(
-                block_text<dim>(element, region<dim>(), t.str(), normal.str())),
-              normal.str());
+                                reference)),
+              reference);
+  report<dim>(
+    "traction patch",
+    *solve_from_text<dim>(block_text<dim>(
+      element, region<dim>(), normal_traction_supports<dim>(s), normal)),
+    normal);
 }
 
 template <int dim>

@@ -152,25 +152,10 @@ namespace
       double sn[3][3] = {{s[0][0], 0, 0}, {0, s[1][1], 0}, {0, 0, s[2][2]}};
       double en[3][3];
       law_strain(sn, en);
-      std::ostringstream ref, t;
-      ref << std::setprecision(17);
-      for (unsigned int c = 0;
-           c < hrcontact::MixedSpaces<dim>::n_stress_components;
-           ++c)
-        ref << (c ? "; " : "") << (c < dim ? sn[c][c] : 0.);
-      t << std::setprecision(17) << "subsection Supports\n"
-        << "  set Prescribed displacements = 0 x: 0 | 2 y: 0"
-        << (dim == 3 ? " | 4 z: 0" : "") << "\nend\n"
-        << "subsection Loads\n  set Tractions = ";
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          t << (d ? " | " : "") << 2 * d + 1 << ": ";
-          for (unsigned int i = 0; i < dim; ++i)
-            t << (i ? "; " : "") << (i == d ? sn[d][d] : 0.);
-        }
-      t << "\nend\n";
-      auto problem = solve_from_text<dim>(patch_text<dim>(t.str(), ref.str()));
-      report<dim>("traction patch", *problem, ref.str());
+      const std::string ref     = stress_reference<dim>(sn, true);
+      auto              problem = solve_from_text<dim>(
+        patch_text<dim>(normal_traction_supports<dim>(sn), ref));
+      report<dim>("traction patch", *problem, ref);
       // The far corner moves by eps x: the law's normal strains.
       dealii::Point<dim> corner;
       for (unsigned int d = 0; d < dim; ++d)

@@ -15,7 +15,9 @@
 // released sets, p to 1e-9 of max |p|) and the same displacements and stresses
 // (each process compares its own cells). The partition must give every dof and
 // cell exactly one owner and each process a share, and every contact row one
-// owner (the process of its node; ContactRowPartition).
+// owner (the process of its node; ContactRowPartition). The same holds on
+// locally refined meshes, whose hanging nodes' equations are shared among
+// their parents' rows across the processes (HangingShareForces).
 
 #include <deal.II/base/mpi.h>
 
@@ -325,5 +327,27 @@ main(int argc, char **argv)
              "subsection Linear solver\n  set Solver = cg-amg\nend\n");
   compare<3>("block-3d-contact.prm",
              "subsection Geometry\n  set Global refinements = 1\nend\n"
+             "subsection Linear solver\n  set Solver = cg-amg\nend\n");
+  // Locally refined meshes (hanging nodes): the cells around a hanging node
+  // may be on another process than its parents' rows. Hertz refined at its
+  // contact zone, with AMG and with MUMPS, and the 3D block refined at
+  // part of its base, where hanging nodes lie on the contact face.
+  const std::string hertz_region =
+    "subsection Mesh refinement\n"
+    "  set Refinement region = -0.001, -0.051 : 0.015, -0.043\n"
+    "  set Region refinements = 2\nend\n";
+  compare<2>("hertz.prm",
+             "subsection Geometry\n  set Global refinements = 3\nend\n" +
+               hertz_region +
+               "subsection Linear solver\n  set Solver = cg-amg\nend\n");
+  compare<2>("hertz.prm",
+             "subsection Geometry\n  set Global refinements = 3\nend\n" +
+               hertz_region +
+               "subsection Linear solver\n  set Solver = direct\nend\n");
+  compare<3>("block-3d-contact.prm",
+             "subsection Geometry\n  set Global refinements = 1\nend\n"
+             "subsection Mesh refinement\n"
+             "  set Refinement region = 0.9, 0.9, -0.1 : 2.1, 2.1, 0.3\n"
+             "  set Region refinements = 1\nend\n"
              "subsection Linear solver\n  set Solver = cg-amg\nend\n");
 }

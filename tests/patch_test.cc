@@ -65,58 +65,23 @@ void
 run(const std::string &element)
 {
   std::cout << "dim = " << dim << ", stress element " << element << std::endl;
-  const double E = 1000, nu = 0.3;
-  double       s[3][3] = {{3., 1.5, -0.7}, {1.5, -2., 0.4}, {-0.7, 0.4, 0.5}};
-  if (dim == 2)
-    s[2][2] = nu * (s[0][0] + s[1][1]); // plane strain: eps_zz = 0
-  const double trace = s[0][0] + s[1][1] + s[2][2];
-  double       eps[3][3];
-  for (unsigned int a = 0; a < 3; ++a)
-    for (unsigned int b = 0; b < 3; ++b)
-      eps[a][b] = ((1 + nu) * s[a][b] - (a == b ? nu * trace : 0.)) / E;
-
-  std::ostringstream reference;
-  reference << std::setprecision(17);
-  for (unsigned int c = 0; c < hrcontact::MixedSpaces<dim>::n_stress_components;
-       ++c)
-    {
-      const auto ab = hrcontact::MixedSpaces<dim>::stress_component_indices(c);
-      reference << (c ? "; " : "") << s[ab.first][ab.second];
-    }
+  double s[3][3], eps[3][3];
+  patch_state<dim>(1000, 0.3, s, eps);
+  const std::string reference = stress_reference<dim>(s);
 
   // (a) u = eps x on every boundary.
-  {
-    std::ostringstream t;
-    t << linear_displacement_supports<dim>(eps);
-    report<dim>("displacement patch",
-                *solve_from_text<dim>(
-                  patch_text<dim>(element, t.str(), reference.str())),
-                reference.str());
-  }
+  report<dim>("displacement patch",
+              *solve_from_text<dim>(patch_text<dim>(
+                element, linear_displacement_supports<dim>(eps), reference)),
+              reference);
 
   // (b) normal stresses only, by tractions on the faces x = 1, y = 1 (z = 1)
   // and rollers on x = 0, y = 0 (z = 0).
   {
-    std::ostringstream ref, t;
-    ref << std::setprecision(17);
-    for (unsigned int c = 0;
-         c < hrcontact::MixedSpaces<dim>::n_stress_components;
-         ++c)
-      ref << (c ? "; " : "") << (c < dim ? s[c][c] : 0.);
-    t << std::setprecision(17) << "subsection Supports\n"
-      << "  set Prescribed displacements = 0 x: 0 | 2 y: 0"
-      << (dim == 3 ? " | 4 z: 0" : "") << "\nend\n"
-      << "subsection Loads\n  set Tractions = ";
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        t << (d ? " | " : "") << 2 * d + 1 << ": ";
-        for (unsigned int a = 0; a < dim; ++a)
-          t << (a ? "; " : "") << (a == d ? s[d][d] : 0.);
-      }
-    t << "\nend\n";
-    auto problem =
-      solve_from_text<dim>(patch_text<dim>(element, t.str(), ref.str()));
-    report<dim>("traction patch", *problem, ref.str());
+    const std::string ref     = stress_reference<dim>(s, true);
+    auto              problem = solve_from_text<dim>(
+      patch_text<dim>(element, normal_traction_supports<dim>(s), ref));
+    report<dim>("traction patch", *problem, ref);
     // The rollers carry the load: reaction on x = 0 balances s_xx * area.
     double rx = 0;
     for (unsigned int k = 0;

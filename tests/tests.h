@@ -97,6 +97,74 @@ namespace hrcontact_tests
     return t.str();
   }
 
+  /**
+   * The patch tests' uniform stress state s (plane strain: s_zz = nu (s_xx +
+   * s_yy)) and its strain eps for the isotropic law (E, nu), computed here
+   * independently of the library's compliance.
+   */
+  template <int dim>
+  void
+  patch_state(const double E, const double nu, double s[3][3], double eps[3][3])
+  {
+    const double state[3][3] = {{3., 1.5, -0.7},
+                                {1.5, -2., 0.4},
+                                {-0.7, 0.4, 0.5}};
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int b = 0; b < 3; ++b)
+        s[a][b] = state[a][b];
+    if (dim == 2)
+      s[2][2] = nu * (s[0][0] + s[1][1]); // plane strain: eps_zz = 0
+    const double trace = s[0][0] + s[1][1] + s[2][2];
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int b = 0; b < 3; ++b)
+        eps[a][b] = ((1 + nu) * s[a][b] - (a == b ? nu * trace : 0.)) / E;
+  }
+
+  /** Postprocess/Reference stress of s (MixedSpaces order), to 17 digits;
+   * with @p normal_only its normal components only. */
+  template <int dim>
+  std::string
+  stress_reference(const double s[3][3], const bool normal_only = false)
+  {
+    std::ostringstream reference;
+    reference << std::setprecision(17);
+    for (unsigned int c = 0;
+         c < hrcontact::MixedSpaces<dim>::n_stress_components;
+         ++c)
+      {
+        const auto ab =
+          hrcontact::MixedSpaces<dim>::stress_component_indices(c);
+        reference << (c ? "; " : "")
+                  << (normal_only ? (c < dim ? s[c][c] : 0.) :
+                                    s[ab.first][ab.second]);
+      }
+    return reference.str();
+  }
+
+  /**
+   * Rollers on the faces x = 0, y = 0 (z = 0) of a colorized box and the
+   * tractions of the normal stresses of s on x = 1, y = 1 (z = 1), to 17
+   * digits: the traction patch test.
+   */
+  template <int dim>
+  std::string
+  normal_traction_supports(const double s[3][3])
+  {
+    std::ostringstream t;
+    t << std::setprecision(17) << "subsection Supports\n"
+      << "  set Prescribed displacements = 0 x: 0 | 2 y: 0"
+      << (dim == 3 ? " | 4 z: 0" : "") << "\nend\n"
+      << "subsection Loads\n  set Tractions = ";
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        t << (d ? " | " : "") << 2 * d + 1 << ": ";
+        for (unsigned int a = 0; a < dim; ++a)
+          t << (a ? "; " : "") << (a == d ? s[d][d] : 0.);
+      }
+    t << "\nend\n";
+    return t.str();
+  }
+
   /** Build and solve a problem from parameter text (no files written). */
   template <int dim>
   std::unique_ptr<hrcontact::HRProblem<dim>>

@@ -72,6 +72,14 @@ namespace hrcontact
   }
 
   template <int dim>
+  void
+  HRProblem<dim>::refine_adaptively(const AdaptiveRefinement<dim> &cycles)
+  {
+    scene.adaptive.history = cycles.history;
+    scene.adaptive.cycles  = cycles.cycles;
+  }
+
+  template <int dim>
   const Results<dim> &
   HRProblem<dim>::results() const
   {
@@ -164,7 +172,7 @@ namespace hrcontact
        scene.has_changing_rows(),
        mesh.distributed(),
        MaterialLoop<dim>::iterates(scene),
-       system.n_hanging_dofs > 0},
+       scene.refined_locally()},
       log);
     const bool condensed = (r.solve.path == SolutionPath::condensed);
     {

@@ -33,17 +33,20 @@ namespace hrcontact
       scene.distortion != 0                      ? "Geometry/Distortion" :
       needs.postprocessor_walks_mesh ? "a postprocessor walks across it" :
                                        "";
-    if (n_processes > 1 && scene.local_refinement.active())
-      throw InputError(
-        "Mesh refinement/Region refinements: a locally refined mesh runs on "
-        "one process for now (its hanging nodes are not yet shared between "
-        "processes); run it serially.");
     distributed_mesh = n_processes > 1 && replicated_reason.empty();
+    if (n_processes > 1 && !distributed_mesh && scene.refined_locally())
+      throw InputError("Mesh refinement: a locally refined mesh runs on "
+                       "several processes only as a distributed mesh, which " +
+                       replicated_reason +
+                       " keeps from it; run it on one process.");
     if (distributed_mesh)
       mesh = std::make_unique<parallel::distributed::Triangulation<dim>>(
         communicator);
     else
-      mesh = std::make_unique<Triangulation<dim>>();
+      // The 2:1 balance at vertices p4est keeps on a distributed mesh, so
+      // that a locally refined mesh is the same serially.
+      mesh = std::make_unique<Triangulation<dim>>(
+        Triangulation<dim>::limit_level_difference_at_vertices);
     scene.create_mesh(*mesh);
     check_named_boundary_ids(scene, *mesh, communicator);
     spaces.setup(*mesh);
@@ -51,7 +54,7 @@ namespace hrcontact
     // mesh that small stays serial, as it needs every cell on every process
     // (the mesh is cheap to build again).
     if (distributed_mesh && path_choice.setting == Setting::automatic &&
-        !needs.material_iteration &&
+        !needs.material_iteration && !scene.refined_locally() &&
         path_choice.dense_fits_every_dof_free(
           spaces.dof_handler_displacement.n_dofs(),
           spaces.stress_unknowns().n_dofs()))
@@ -59,7 +62,8 @@ namespace hrcontact
         distributed_mesh  = false;
         replicated_reason = "small enough for the null-space path";
         // The DoFHandlers move to the new mesh before the old one goes.
-        auto serial = std::make_unique<Triangulation<dim>>();
+        auto serial = std::make_unique<Triangulation<dim>>(
+          Triangulation<dim>::limit_level_difference_at_vertices);
         scene.create_mesh(*serial);
         spaces.setup(*serial);
         mesh = std::move(serial);

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <hrcontact/adaptivity/adaptive_run.h>
 #include <hrcontact/core/hr_problem.h>
 #include <hrcontact/core/input.h>
 #include <hrcontact/core/run.h>
@@ -50,6 +51,14 @@ namespace hrcontact
     void
     run_dimension(ParameterHandler &prm, std::ostream &log)
     {
+      prm.enter_subsection("Mesh refinement");
+      const bool adaptive = prm.get_integer("Adaptive cycles") > 0;
+      prm.leave_subsection();
+      if (adaptive)
+        {
+          run_adaptive_cycles<dim>(prm, log);
+          return;
+        }
       HRProblem<dim> problem(prm);
       problem.run(log);
     }

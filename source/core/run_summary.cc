@@ -1,6 +1,9 @@
 #include <hrcontact/core/run_summary.h>
 #include <hrcontact/solvers/equilibrium_reduction.h>
 
+#include <iomanip>
+#include <sstream>
+
 namespace hrcontact
 {
   template <int dim>
@@ -34,6 +37,35 @@ namespace hrcontact
     summary.add("converged", r.converged() ? "true" : "false");
     add_material(r, summary);
     add_coarse_levels(r, summary);
+    add_adaptive_cycles(r, summary);
+  }
+
+  template <int dim>
+  void
+  RunSummary<dim>::add_adaptive_cycles(const Results<dim> &r, Summary &summary)
+  {
+    const auto &cycles = r.scene.adaptive.cycles;
+    if (cycles.empty())
+      return;
+    // One value per cycle, comma-separated, oldest first.
+    std::ostringstream cells, dofs, estimates, seconds;
+    double             total = 0;
+    for (unsigned int k = 0; k < cycles.size(); ++k)
+      {
+        const char *sep = k ? ", " : "";
+        cells << sep << cycles[k].cells;
+        dofs << sep << cycles[k].displacement_dofs;
+        estimates << sep << std::setprecision(6) << cycles[k].estimate;
+        seconds << sep << std::setprecision(4) << cycles[k].seconds;
+        total += cycles[k].seconds;
+      }
+    summary.add("adaptive_cycles", cycles.size() - 1);
+    summary.add("adaptive_estimator", r.scene.adaptive.estimator);
+    summary.add("adaptive_cycle_cells", cells.str());
+    summary.add("adaptive_cycle_dofs", dofs.str());
+    summary.add("adaptive_cycle_estimates", estimates.str());
+    summary.add("adaptive_cycle_seconds", seconds.str());
+    summary.add("adaptive_total_seconds", total);
   }
 
   template <int dim>

@@ -87,6 +87,7 @@ namespace hrcontact
     prm.leave_subsection();
 
     LocalRefinement<dim>::declare_parameters(prm);
+    AdaptiveRefinement<dim>::declare_parameters(prm);
     MaterialLawFactory<dim>::declare_parameters(prm);
     StressConstraintFactory<dim>::declare_parameters(prm);
 
@@ -139,11 +140,12 @@ namespace hrcontact
     }
     prm.leave_subsection();
     local_refinement.parse_parameters(prm, constants);
-    if (local_refinement.active() && distortion != 0)
-      throw InputError("Geometry/Distortion with Mesh refinement/Region "
-                       "refinements: a distortion would move the hanging "
-                       "nodes off their parents' edges; use one or the "
-                       "other.");
+    adaptive.parse_parameters(prm);
+    if (refined_locally() && distortion != 0)
+      throw InputError("Geometry/Distortion with Mesh refinement (Region "
+                       "refinements or Adaptive cycles): a distortion would "
+                       "move the hanging nodes off their parents' edges; use "
+                       "one or the other.");
 
     material          = MaterialLawFactory<dim>::create(prm, constants);
     stress_constraint = StressConstraintFactory<dim>::create(prm);
@@ -247,7 +249,7 @@ namespace hrcontact
   void
   Scene<dim>::create_mesh(Triangulation<dim> &triangulation) const
   {
-    if (!local_refinement.active())
+    if (!refined_locally())
       grid->create(triangulation, global_refinements);
     else if (grid->create_coarse(triangulation))
       {
@@ -256,6 +258,7 @@ namespace hrcontact
         triangulation.refine_global(global_refinements);
         const auto place = grid->refined_vertex_map();
         local_refinement.apply(triangulation, place);
+        adaptive.apply(triangulation, global_refinements);
         GridTools::transform(place, triangulation);
         LocalRefinement<dim>::centre_hanging_vertices(triangulation);
       }
@@ -264,6 +267,7 @@ namespace hrcontact
         grid->create(triangulation, global_refinements);
         local_refinement.apply(triangulation,
                                [](const Point<dim> &x) { return x; });
+        adaptive.apply(triangulation, global_refinements);
         LocalRefinement<dim>::centre_hanging_vertices(triangulation);
       }
 

@@ -17,10 +17,9 @@ namespace hrcontact
                                        const double          coefficient,
                                        Vector<double>       &v) const
   {
-    for (const auto *terms : {&row.combination, &row.shares})
-      for (const auto &[dof, c] : *terms)
-        for (auto it = B.begin(b_row(dof)); it != B.end(b_row(dof)); ++it)
-          v[it->column()] += coefficient * c * it->value();
+    for (const auto &[dof, c] : row.combination)
+      for (auto it = B.begin(b_row(dof)); it != B.end(b_row(dof)); ++it)
+        v[it->column()] += coefficient * c * it->value();
   }
 
   namespace

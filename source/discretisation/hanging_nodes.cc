@@ -7,6 +7,7 @@
 #include <hrcontact/discretisation/hanging_nodes.h>
 
 #include <map>
+#include <set>
 
 namespace hrcontact
 {
@@ -61,6 +62,50 @@ namespace hrcontact
           }
         row.shares.assign(shares.begin(), shares.end());
       }
+  }
+
+  HangingShareForces::HangingShareForces(const EquilibriumSystem &system,
+                                         const DofPartition      &partition)
+    : any(system.n_hanging_dofs > 0)
+  {
+    if (!any)
+      return;
+    std::set<types::global_dof_index> shared;
+    for (const auto &row : system.rows)
+      for (const auto &[h, w] : row.shares)
+        shared.insert(h);
+    for (unsigned int c = 0; c < system.n_cells(); ++c)
+      if (partition.owned_cell[c] && system.is_stored(c))
+        for (const auto h : system.cell_displacement_dofs[c])
+          if (shared.count(h) > 0)
+            for (const auto j : system.cell_stress_dofs[c])
+              {
+                const double b = system.B.el(system.b_row(h), j);
+                if (b != 0)
+                  terms_.push_back({h, j, b});
+              }
+    forces.reinit(partition.owned, partition.relevant, partition.communicator);
+  }
+
+  void
+  HangingShareForces::evaluate(const std::function<double(std::size_t)> &stress)
+  {
+    if (!any)
+      return;
+    forces = 0;
+    for (std::size_t k = 0; k < terms_.size(); ++k)
+      forces(terms_[k].hanging) += terms_[k].b * stress(k);
+    forces.compress(VectorOperation::add);
+    forces.update_ghost_values();
+  }
+
+  double
+  HangingShareForces::of_row(const EquilibriumRow &row) const
+  {
+    double sum = 0;
+    for (const auto &[h, w] : row.shares)
+      sum += w * forces(h);
+    return sum;
   }
 
   template void

@@ -1,8 +1,10 @@
 #include <deal.II/base/mpi.h>
 
+#include <hrcontact/discretisation/hanging_nodes.h>
 #include <hrcontact/discretisation/reactions.h>
 
 #include <map>
+#include <memory>
 
 namespace hrcontact
 {
@@ -40,6 +42,15 @@ namespace hrcontact
     const std::map<unsigned int, unsigned int> pair_row_at =
       pair_rows_by_slave_node(system, partition);
     values.assign(rows.size(), 0.);
+    // A locally refined mesh: the hanging nodes' forces the rows share.
+    std::unique_ptr<HangingShareForces> shares;
+    if (system.n_hanging_dofs > 0)
+      {
+        shares = std::make_unique<HangingShareForces>(system, partition);
+        shares->evaluate([&](const std::size_t t) {
+          return unknowns(shares->terms()[t].column);
+        });
+      }
     for (unsigned int k = 0; k < rows.size(); ++k)
       {
         const EquilibriumRow &row = system.rows[rows[k]];
@@ -47,7 +58,10 @@ namespace hrcontact
           continue;
         if (pair_row_at.empty())
           {
-            values[k] = system.row_times(row, unknowns) - system.row_load(row);
+            values[k] = system.row_times(row, unknowns);
+            if (shares)
+              values[k] += shares->of_row(row);
+            values[k] -= system.row_load(row);
             continue;
           }
         EquilibriumRow own = row;

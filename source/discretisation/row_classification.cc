@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <tuple>
 
 namespace hrcontact
@@ -390,10 +391,6 @@ namespace hrcontact
     find_hanging_nodes(dh_u,
                        DoFTools::extract_locally_relevant_dofs(dh_u),
                        system);
-    // A hanging node has no rows: its displacement follows its parents'.
-    auto hanging = [&](const unsigned int node) {
-      return is_hanging(system, node_dof<dim>(node, 0));
-    };
 
     // The boundary faces some constraint kind acts on. A distributed mesh:
     // every process classifies the whole boundary (a surface), so that the
@@ -404,6 +401,26 @@ namespace hrcontact
     std::vector<BoundaryFace<dim>> faces = constrained_faces();
     if (parallel_mesh)
       faces = gather_boundary_faces(faces, parallel_mesh->get_communicator());
+
+    // A hanging node has no rows: its displacement follows its parents'.
+    // Every process classifies the whole constrained boundary, so the
+    // hanging ones among its nodes are gathered from the processes that
+    // see them.
+    std::set<unsigned int> hanging_nodes;
+    for (const auto &face : faces)
+      for (const unsigned int node : face.nodes)
+        if (is_hanging(system, node_dof<dim>(node, 0)))
+          hanging_nodes.insert(node);
+    if (parallel_mesh && system.n_hanging_dofs > 0)
+      for (const auto &part : Utilities::MPI::all_gather(
+             parallel_mesh->get_communicator(),
+             std::vector<unsigned int>(hanging_nodes.begin(),
+                                       hanging_nodes.end())))
+        hanging_nodes.insert(part.begin(), part.end());
+    auto hanging = [&](const unsigned int node) {
+      return hanging_nodes.count(node) > 0 ||
+             is_hanging(system, node_dof<dim>(node, 0));
+    };
 
     // The nodes of the constrained boundary: every process classifies them.
     for (const auto &face : faces)

@@ -3,6 +3,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <hrcontact/adaptivity/refinement_indicator.h>
 #include <hrcontact/discretisation/stress_constraint_field.h>
 #include <hrcontact/postprocess/contact_fields.h>
 #include <hrcontact/postprocess/field_values.h>
@@ -202,6 +203,15 @@ namespace hrcontact
         {
           fracture = results.stress_constraint.field->cell_openings();
           data_out.add_data_vector(fracture, "fracture_strain");
+        }
+      // Adaptive cycles: each cell's indicator, where the next cycle would
+      // refine.
+      Vector<float> indicators;
+      if (scene.adaptive.active())
+        {
+          RefinementIndicatorFactory<dim>::create(scene.adaptive.estimator)
+            ->estimate(results, indicators);
+          data_out.add_data_vector(indicators, "refinement_indicator");
         }
       if (contact_fields)
         contact_fields->add_to(data_out);

@@ -54,6 +54,14 @@ namespace hrcontact
                        const MPI_Comm             communicator = MPI_COMM_WORLD,
                        const CoarserLevelRequest *as_coarser_level = nullptr);
 
+    /**
+     * An adaptive cycle (run_adaptive_cycles): the mesh replays the steps
+     * of the cycles before (call before solve()), and summary.txt lists
+     * their records (call again before output_results()).
+     */
+    void
+    refine_adaptively(const AdaptiveRefinement<dim> &cycles);
+
     /** Everything up to and including the solve; no files written. */
     void
     solve(std::ostream &log);

@@ -24,6 +24,9 @@ namespace hrcontact
          Summary            &summary);
 
   private:
+    /** Each adaptive cycle's cells, dofs, estimate and time. */
+    static void
+    add_adaptive_cycles(const Results<dim> &r, Summary &summary);
     static void
     add_linear_solver(const Results<dim> &results,
                       const bool          elastic_solve_timed,

@@ -7,6 +7,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <hrcontact/adaptivity/adaptive_refinement.h>
 #include <hrcontact/constraints/constraint_source.h>
 #include <hrcontact/core/input.h>
 #include <hrcontact/geometry/local_refinement.h>
@@ -82,6 +83,15 @@ namespace hrcontact
     double                              rotation_degrees   = 0;
     /** Mesh refinement/: cells refined again in a box (hanging nodes). */
     LocalRefinement<dim> local_refinement;
+    /** Mesh refinement/: the adaptive cycles, and the steps of those so
+     * far that this run's mesh replays. */
+    AdaptiveRefinement<dim> adaptive;
+    /** Whether the mesh is not uniformly refined (hanging nodes). */
+    bool
+    refined_locally() const
+    {
+      return local_refinement.active() || adaptive.active();
+    }
 
     /** The material law (Material/Model), read with the scene. */
     std::shared_ptr<const MaterialLaw<dim>> material;

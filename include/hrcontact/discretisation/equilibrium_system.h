@@ -77,10 +77,12 @@ namespace hrcontact
      * The hanging dofs whose equilibrium equations this row carries (a
      * locally refined mesh), with their weights sum_j c_j a_hj: the
      * conforming test function of the row is that of its node plus a_hj
-     * times each hanging node's that depends on it. Force-like quantities
-     * (B~_r s, f~_r) include them; the direction (kinematic) does not, as a
-     * hanging node's displacement follows its parents'. Empty on a uniform
-     * mesh.
+     * times each hanging node's that depends on it. The load f~_r
+     * (row_load) includes them, the internal force B~_r s through
+     * HangingShareForces (the cells around a hanging node may be on other
+     * processes: row_times has the combination only); the direction
+     * (kinematic) does not, as a hanging node's displacement follows its
+     * parents'. Empty on a uniform mesh.
      */
     std::vector<std::pair<dealii::types::global_dof_index, double>> shares;
   };
@@ -303,10 +305,9 @@ namespace hrcontact
     row_times(const EquilibriumRow &row, const VectorType &s) const
     {
       double sum = 0;
-      for (const auto *terms : {&row.combination, &row.shares})
-        for (const auto &[dof, c] : *terms)
-          for (auto it = B.begin(b_row(dof)); it != B.end(b_row(dof)); ++it)
-            sum += c * it->value() * s(it->column());
+      for (const auto &[dof, c] : row.combination)
+        for (auto it = B.begin(b_row(dof)); it != B.end(b_row(dof)); ++it)
+          sum += c * it->value() * s(it->column());
       return sum;
     }
 

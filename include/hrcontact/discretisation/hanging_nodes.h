@@ -5,7 +5,12 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <hrcontact/discretisation/dof_partition.h>
 #include <hrcontact/discretisation/equilibrium_system.h>
+#include <hrcontact/discretisation/field_vector.h>
+
+#include <functional>
+#include <vector>
 
 namespace hrcontact
 {
@@ -26,12 +31,16 @@ namespace hrcontact
                      const dealii::IndexSet        &relevant,
                      EquilibriumSystem             &system);
 
-  /** Whether a displacement dof hangs (has no row of its own). */
+  /** Whether a displacement dof hangs (has no row of its own); false for a
+   * dof this process does not see. */
   inline bool
   is_hanging(const EquilibriumSystem              &system,
              const dealii::types::global_dof_index dof)
   {
-    return system.n_hanging_dofs > 0 &&
+    if (system.n_hanging_dofs == 0)
+      return false;
+    const dealii::IndexSet &lines = system.hanging_nodes.get_local_lines();
+    return (lines.size() == 0 || lines.is_element(dof)) &&
            system.hanging_nodes.is_constrained(dof);
   }
 
@@ -41,6 +50,49 @@ namespace hrcontact
    */
   void
   add_hanging_shares(EquilibriumSystem &system);
+
+  /**
+   * The internal forces (B s)_h of the hanging dofs some row shares, each
+   * summed over every process's owned cells: the cells around a hanging node
+   * need not be ghosts of the process that owns its parent's row, so each
+   * process adds its own cells' part and the sums meet at the owners (and
+   * their ghosts). The row's part is then sum_h w_h (B s)_h
+   * (EquilibriumRow::shares); EquilibriumSystem::row_times has the rest.
+   * Collective; nothing to do on a uniform mesh.
+   */
+  class HangingShareForces
+  {
+  public:
+    /** The terms of this process's owned stored cells. */
+    HangingShareForces(const EquilibriumSystem &system,
+                       const DofPartition      &partition);
+
+    /** One term: the B entry of a hanging dof against a stress column. */
+    struct Term
+    {
+      dealii::types::global_dof_index hanging;
+      dealii::types::global_dof_index column;
+      double                          b;
+    };
+    const std::vector<Term> &
+    terms() const
+    {
+      return terms_;
+    }
+
+    /** The sums with @p stress(k) the stress of term k's column. */
+    void
+    evaluate(const std::function<double(std::size_t)> &stress);
+
+    /** sum_h w_h (B s)_h of the row's shares (zero without). */
+    double
+    of_row(const EquilibriumRow &row) const;
+
+  private:
+    bool              any = false;
+    std::vector<Term> terms_;
+    FieldVector       forces;
+  };
 } // namespace hrcontact
 
 #endif

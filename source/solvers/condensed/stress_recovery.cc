@@ -7,29 +7,6 @@ namespace hrcontact
 {
   using namespace dealii;
 
-  namespace
-  {
-    /** A row's terms: its combination, then its hanging shares (in the
-     * order of EquilibriumSystem::row_times). */
-    unsigned int
-    n_terms(const EquilibriumRow &row)
-    {
-      return row.combination.size() + row.shares.size();
-    }
-    types::global_dof_index
-    term_dof(const EquilibriumRow &row, const unsigned int k)
-    {
-      const unsigned int n = row.combination.size();
-      return k < n ? row.combination[k].first : row.shares[k - n].first;
-    }
-    double
-    coefficient(const EquilibriumRow &row, const unsigned int k)
-    {
-      const unsigned int n = row.combination.size();
-      return k < n ? row.combination[k].second : row.shares[k - n].second;
-    }
-  } // namespace
-
   StressRecovery::StressRecovery(const EquilibriumSystem &system,
                                  const DofPartition      &partition)
     : system(system)
@@ -86,15 +63,12 @@ namespace hrcontact
     std::map<types::global_dof_index, std::size_t> position;
     for (const unsigned int r : system.contact_rows)
       if (owned_row(system.rows[r]))
-        for (unsigned int k = 0; k < n_terms(system.rows[r]); ++k)
-          if (coefficient(system.rows[r], k) != 0) // a pair's master entries
-            {
-              const auto dof = term_dof(system.rows[r], k);
-              for (auto it = system.B.begin(system.b_row(dof));
-                   it != system.B.end(system.b_row(dof));
-                   ++it)
-                position.emplace(it->column(), none);
-            }
+        for (const auto &[dof, c] : system.rows[r].combination)
+          if (c != 0) // a contact pair's master entries
+            for (auto it = system.B.begin(system.b_row(dof));
+                 it != system.B.end(system.b_row(dof));
+                 ++it)
+              position.emplace(it->column(), none);
     for (unsigned int k = 0; k < cells.size(); ++k)
       {
         const auto &ds = system.cell_stress_dofs[cells[k]];
@@ -112,10 +86,10 @@ namespace hrcontact
       {
         const EquilibriumRow &row = system.rows[r];
         if (owned_row(row) && with_rows)
-          for (unsigned int k = 0; k < n_terms(row); ++k)
+          for (unsigned int k = 0; k < row.combination.size(); ++k)
             {
-              const auto dof = term_dof(row, k);
-              if (coefficient(row, k) == 0)
+              const auto dof = row.combination[k].first;
+              if (row.combination[k].second == 0)
                 continue;
               for (auto it = system.B.begin(system.b_row(dof));
                    it != system.B.end(system.b_row(dof));
@@ -129,6 +103,33 @@ namespace hrcontact
                 }
             }
         term_start.push_back(terms.size());
+      }
+
+    share_forces.reset();
+    share_position.clear();
+    if (with_rows && system.n_hanging_dofs > 0)
+      {
+        share_forces = std::make_unique<HangingShareForces>(system, partition);
+        std::map<types::global_dof_index, std::size_t> at;
+        for (const auto &term : share_forces->terms())
+          at.emplace(term.column, none);
+        for (unsigned int k = 0; k < cells.size(); ++k)
+          {
+            const auto &ds = system.cell_stress_dofs[cells[k]];
+            for (unsigned int j = 0; j < ds.size(); ++j)
+              {
+                const auto found = at.find(ds[j]);
+                if (found != at.end())
+                  found->second = offset[k] + j;
+              }
+          }
+        for (const auto &term : share_forces->terms())
+          {
+            share_position.push_back(at.at(term.column));
+            AssertThrow(share_position.back() != none,
+                        ExcInternalError("a hanging share reads the stresses "
+                                         "of a cell not recovered"));
+          }
       }
   }
 
@@ -161,6 +162,9 @@ namespace hrcontact
     // every cell around it on a distributed mesh; the rows of ghost nodes
     // from their owners.
     p.assign(system.contact_rows.size(), 0.);
+    if (share_forces)
+      share_forces->evaluate(
+        [&](const std::size_t k) { return stress[share_position[k]]; });
     for (const unsigned int i : rows.owned())
       {
         const EquilibriumRow &row = system.rows[system.contact_rows[i]];
@@ -168,8 +172,11 @@ namespace hrcontact
         for (std::size_t t = term_start[i]; t < term_start[i + 1]; ++t)
           {
             const StressTerm &term = terms[t];
-            sum += coefficient(row, term.k) * term.b * stress[term.position];
+            sum +=
+              row.combination[term.k].second * term.b * stress[term.position];
           }
+        if (share_forces)
+          sum += share_forces->of_row(row);
         p[i] = sum - system.row_load(row);
       }
     rows.import_ghosts(p);

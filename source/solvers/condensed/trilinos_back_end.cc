@@ -156,6 +156,15 @@ namespace hrcontact
     changing.add(std::vector<types::global_dof_index>(kept_dofs.begin(),
                                                       kept_dofs.end()),
                  std::vector<double>(kept_dofs.size(), 1.));
+    // A kept cell's hanging dof adds to its parents' rows, which need not
+    // be the cell's own.
+    if (system.n_hanging_dofs > 0)
+      for (const auto i : kept_dofs)
+        if (system.hanging_nodes.is_constrained(i))
+          for (const auto &[parent, a] :
+               *system.hanging_nodes.get_constraint_entries(i))
+            changing.add(std::vector<types::global_dof_index>{parent},
+                         std::vector<double>{1.});
     // A held contact pair row condenses its slave's couplings into the
     // master's rows, on whichever process owns them.
     for (const unsigned int r : system.contact_rows)

@@ -8,7 +8,9 @@
 #include <hrcontact/discretisation/dof_partition.h>
 #include <hrcontact/discretisation/equilibrium_system.h>
 #include <hrcontact/discretisation/field_vector.h>
+#include <hrcontact/discretisation/hanging_nodes.h>
 
+#include <memory>
 #include <vector>
 
 namespace hrcontact
@@ -89,8 +91,7 @@ namespace hrcontact
     std::vector<double> shift;
     /**
      * p = Q s - q without a global stress vector: for each Q row this
-     * process owns, its terms (the index k into the row's combination and
-     * then its hanging shares, the
+     * process owns, its terms (the index k into the row's combination, the
      * position in `stress`, the entry of B) in the order of
      * EquilibriumSystem::row_times, so that the sums are the same to the
      * last bit; the row's coefficients are read at each step (rows that
@@ -105,6 +106,11 @@ namespace hrcontact
     };
     std::vector<StressTerm>  terms;
     std::vector<std::size_t> term_start;
+    /** A locally refined mesh: the hanging shares' forces (summed over the
+     * processes at each step) and each of their terms' position in
+     * `stress`; null on a uniform mesh. */
+    mutable std::unique_ptr<HangingShareForces> share_forces;
+    std::vector<std::size_t>                    share_position;
   };
 } // namespace hrcontact
 

@@ -1,0 +1,147 @@
+#include <deal.II/base/utilities.h>
+
+#include <hrcontact/adaptivity/adaptive_refinement.h>
+#include <hrcontact/adaptivity/refinement_indicator.h>
+#include <hrcontact/core/input.h>
+
+#include <algorithm>
+#include <functional>
+#include <limits>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  AdaptiveRefinement<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh refinement");
+    {
+      prm.declare_entry(
+        "Adaptive cycles",
+        "0",
+        Patterns::Integer(0, 30),
+        "How many times the solved mesh is refined where the Estimator "
+        "says, and solved again (0: the mesh as the Geometry and the "
+        "Refinement region give it). Only the last cycle writes results; "
+        "summary.txt lists every cycle's cells, dofs, time and estimate.");
+      prm.declare_entry("Estimator",
+                        "kelly",
+                        Patterns::Anything(),
+                        "Where to refine: " +
+                          RefinementIndicatorFactory<dim>::descriptions() +
+                          ". Each cell's indicator goes to solution.vtu "
+                          "(refinement_indicator).");
+      prm.declare_entry("Refine fraction",
+                        "0.3",
+                        Patterns::Double(),
+                        "The fraction of all cells, those with the largest "
+                        "indicators, refined in each cycle (in [0, 1]).");
+      prm.declare_entry("Coarsen fraction",
+                        "0.03",
+                        Patterns::Double(),
+                        "The fraction of all cells, those with the smallest "
+                        "indicators, coarsened in each cycle (in [0, 1]; "
+                        "never below the global refinements).");
+      prm.declare_entry("Maximum dofs",
+                        "0",
+                        Patterns::Integer(0),
+                        "No further cycle once a mesh has this many "
+                        "displacement dofs (0: no ceiling).");
+    }
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  AdaptiveRefinement<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh refinement");
+    n_cycles         = prm.get_integer("Adaptive cycles");
+    estimator        = Utilities::trim(prm.get("Estimator"));
+    refine_fraction  = prm.get_double("Refine fraction");
+    coarsen_fraction = prm.get_double("Coarsen fraction");
+    maximum_dofs     = prm.get_integer("Maximum dofs");
+    prm.leave_subsection();
+    const std::string where = "Mesh refinement/";
+    for (const auto &[name, value] :
+         {std::make_pair("Refine fraction", refine_fraction),
+          std::make_pair("Coarsen fraction", coarsen_fraction)})
+      if (!(value >= 0 && value <= 1))
+        throw InputError(where + name + " = " + std::to_string(value) +
+                         ": a fraction of the cells lies in [0, 1].");
+    if (refine_fraction + coarsen_fraction > 1)
+      throw InputError(where + "Refine fraction + Coarsen fraction = " +
+                       std::to_string(refine_fraction + coarsen_fraction) +
+                       " exceeds 1: a cell cannot be refined and coarsened.");
+    // The name is checked now, not after the first solve.
+    RefinementIndicatorFactory<dim>::create(estimator);
+    history.clear();
+    cycles.clear();
+  }
+
+  template <int dim>
+  void
+  AdaptiveRefinement<dim>::apply(Triangulation<dim> &triangulation,
+                                 const unsigned int  coarsest_level) const
+  {
+    for (const RefinementStep &step : history)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const std::string id = cell->id().to_string();
+              if (step.refine.count(id) > 0)
+                cell->set_refine_flag();
+              else if (step.coarsen.count(id) > 0 &&
+                       cell->level() > int(coarsest_level))
+                cell->set_coarsen_flag();
+            }
+        triangulation.execute_coarsening_and_refinement();
+      }
+  }
+
+  template <int dim>
+  RefinementStep
+  AdaptiveRefinement<dim>::mark(const Triangulation<dim> &triangulation,
+                                const Vector<float>      &indicators,
+                                const MPI_Comm            communicator) const
+  {
+    std::vector<float> own;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        own.push_back(indicators[cell->active_cell_index()]);
+    std::vector<float> all;
+    for (const auto &part : Utilities::MPI::all_gather(communicator, own))
+      all.insert(all.end(), part.begin(), part.end());
+    std::sort(all.begin(), all.end(), std::greater<float>());
+    const std::size_t n         = all.size();
+    const std::size_t n_refine  = std::size_t(refine_fraction * n);
+    const std::size_t n_coarsen = std::size_t(coarsen_fraction * n);
+    // Refine the cells at or above the n_refine-th largest indicator,
+    // coarsen those at or below the n_coarsen-th smallest.
+    const float refine_above =
+      n_refine > 0 ? all[n_refine - 1] : std::numeric_limits<float>::max();
+    const float coarsen_below = n_coarsen > 0 ? all[n - n_coarsen] : -1.f;
+    std::vector<std::string> refine, coarsen;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const float eta = indicators[cell->active_cell_index()];
+          if (n_refine > 0 && eta >= refine_above && eta > 0)
+            refine.push_back(cell->id().to_string());
+          else if (n_coarsen > 0 && eta <= coarsen_below)
+            coarsen.push_back(cell->id().to_string());
+        }
+    RefinementStep step;
+    for (const auto &part : Utilities::MPI::all_gather(communicator, refine))
+      step.refine.insert(part.begin(), part.end());
+    for (const auto &part : Utilities::MPI::all_gather(communicator, coarsen))
+      step.coarsen.insert(part.begin(), part.end());
+    return step;
+  }
+
+  template class AdaptiveRefinement<2>;
+  template class AdaptiveRefinement<3>;
+} // namespace hrcontact
