@@ -68,11 +68,8 @@ report(const std::string               &name,
        const hrcontact::HRProblem<dim> &problem,
        const std::string               &reference)
 {
-  const auto &r     = problem.results();
-  const auto  exact = hrcontact::make_function<dim>(
-    reference, hrcontact::MixedSpaces<dim>::n_stress_components, {}, "ref");
-  const auto [max_err, l2_err] =
-    hrcontact::stress_error(r.spaces, r.stress, *exact);
+  const auto &r                = problem.results();
+  const auto [max_err, l2_err] = stress_errors<dim>(r, reference);
   std::cout << "  " << name << ": " << r.triangulation().n_active_cells()
             << " cells, " << r.system.n_hanging_dofs / dim
             << " hanging nodes, max relative stress error < 1e-10: "

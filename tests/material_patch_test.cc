@@ -83,14 +83,8 @@ namespace
          const hrcontact::HRProblem<dim> &problem,
          const std::string               &reference)
   {
-    const auto &r     = problem.results();
-    const auto  exact = hrcontact::make_function<dim>(
-      reference,
-      hrcontact::MixedSpaces<dim>::n_stress_components,
-      {},
-      "reference");
-    const auto [max_err, l2_err] =
-      hrcontact::stress_error(r.spaces, r.stress, *exact);
+    const auto &r                = problem.results();
+    const auto [max_err, l2_err] = stress_errors<dim>(r, reference);
     std::cout << "  " << name << ": " << r.triangulation().n_active_cells()
               << " distorted cells, " << r.material.newton_steps
               << " Newton steps, last stress change < 1e-10: "
@@ -125,25 +119,15 @@ namespace
       std::cout << "  s_eq / s_0 = " << std::sqrt(3 * j2) / s_0 << std::endl;
     }
 
-    std::ostringstream reference;
-    reference << std::setprecision(17);
-    for (unsigned int c = 0;
-         c < hrcontact::MixedSpaces<dim>::n_stress_components;
-         ++c)
-      {
-        const auto ab =
-          hrcontact::MixedSpaces<dim>::stress_component_indices(c);
-        reference << (c ? "; " : "") << s[ab.first][ab.second];
-      }
+    const std::string reference = stress_reference<dim>(s);
 
     // (a) u = eps x on every boundary.
     {
       std::ostringstream t;
       t << linear_displacement_supports<dim>(eps);
       report<dim>("displacement patch",
-                  *solve_from_text<dim>(
-                    patch_text<dim>(t.str(), reference.str())),
-                  reference.str());
+                  *solve_from_text<dim>(patch_text<dim>(t.str(), reference)),
+                  reference);
     }
 
     // (b) normal stresses only, by tractions on the faces x = 1, y = 1

@@ -54,22 +54,7 @@ namespace
   std::pair<double, double>
   error_against(const hrcontact::Results<dim> &r, const double sigma[3][3])
   {
-    std::ostringstream reference;
-    reference << std::setprecision(17);
-    for (unsigned int c = 0;
-         c < hrcontact::MixedSpaces<dim>::n_stress_components;
-         ++c)
-      {
-        const auto ab =
-          hrcontact::MixedSpaces<dim>::stress_component_indices(c);
-        reference << (c ? "; " : "") << sigma[ab.first][ab.second];
-      }
-    const auto exact = hrcontact::make_function<dim>(
-      reference.str(),
-      hrcontact::MixedSpaces<dim>::n_stress_components,
-      {},
-      "reference");
-    return hrcontact::stress_error(r.spaces, r.stress, *exact);
+    return stress_errors<dim>(r, stress_reference<dim>(sigma));
   }
 
   template <int dim>

@@ -43,15 +43,8 @@ report(const std::string               &name,
        const hrcontact::HRProblem<dim> &problem,
        const std::string               &reference)
 {
-  const auto exact = hrcontact::make_function<dim>(
-    reference,
-    hrcontact::MixedSpaces<dim>::n_stress_components,
-    {},
-    "reference");
   const auto [max_err, l2_err] =
-    hrcontact::stress_error(problem.results().spaces,
-                            problem.results().stress,
-                            *exact);
+    stress_errors<dim>(problem.results(), reference);
   std::cout << "  " << name << ": "
             << problem.results().triangulation().n_active_cells()
             << " distorted cells, max relative stress error < 1e-10: "

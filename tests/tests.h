@@ -8,6 +8,7 @@
 #include <hrcontact/core/hr_problem.h>
 #include <hrcontact/core/run.h>
 #include <hrcontact/material/stress_constraint.h>
+#include <hrcontact/postprocess/field_values.h>
 #include <hrcontact/postprocess/section_forces.h>
 
 #include <algorithm>
@@ -139,6 +140,20 @@ namespace hrcontact_tests
                                     s[ab.first][ab.second]);
       }
     return reference.str();
+  }
+
+  /** The max and L2 relative errors of a run's stresses against the
+   * expressions of @p reference (Postprocess/Reference stress syntax). */
+  template <int dim>
+  std::pair<double, double>
+  stress_errors(const hrcontact::Results<dim> &r, const std::string &reference)
+  {
+    const auto exact = hrcontact::make_function<dim>(
+      reference,
+      hrcontact::MixedSpaces<dim>::n_stress_components,
+      {},
+      "reference");
+    return hrcontact::stress_error(r.spaces, r.stress, *exact);
   }
 
   /**

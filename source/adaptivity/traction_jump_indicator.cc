@@ -13,23 +13,20 @@ namespace hrcontact
 
   namespace
   {
-    /** The traction sigma n at each quadrature point of a face values
-     * object reinitialised on a stress cell's face or subface. */
+    /** The stress tensor at each quadrature point of a face values object
+     * reinitialised on a stress cell's face or subface. */
     template <int dim, typename FaceValues>
-    void
-    tractions(const FaceValues                  &values,
-              const FieldVector                 &stress,
-              std::vector<Vector<double>>       &components,
-              std::vector<Tensor<1, dim>>       &traction,
-              const std::vector<Tensor<1, dim>> *normals = nullptr)
+    std::vector<SymmetricTensor<2, dim>>
+    stresses(const FaceValues &values, const FieldVector &stress)
     {
-      const unsigned int n = values.n_quadrature_points;
-      components.resize(n, Vector<double>(values.get_fe().n_components()));
+      std::vector<Vector<double>> components(values.n_quadrature_points,
+                                             Vector<double>(
+                                               values.get_fe().n_components()));
       values.get_function_values(stress, components);
-      traction.resize(n);
-      for (unsigned int q = 0; q < n; ++q)
-        traction[q] = stress_tensor<dim>(components[q]) *
-                      (normals ? (*normals)[q] : values.normal_vector(q));
+      std::vector<SymmetricTensor<2, dim>> sigma;
+      for (const auto &c : components)
+        sigma.push_back(stress_tensor<dim>(c));
+      return sigma;
     }
 
     /** The quadrature point of @p others nearest to @p x. */
@@ -59,29 +56,24 @@ namespace hrcontact
     FEFaceValues<dim>    own_face(fe, rule, flags), other_face(fe, rule, flags);
     FESubfaceValues<dim> own_subface(fe, rule, flags),
       other_subface(fe, rule, flags);
-    std::vector<Vector<double>> components;
-    std::vector<Tensor<1, dim>> t_own, t_other;
-    Vector<double>              applied(dim);
+    Vector<double> applied(dim);
 
-    // Half of h int |t_own - t_other|^2 over matching points (the other
-    // side evaluated with the own side's normal).
+    // Half of h int |(sigma_own - sigma_other) n|^2 over the face, the
+    // other side's stresses at the matching points.
     auto jump = [&](const auto &own, const auto &other) {
-      tractions<dim>(own, results.stress, components, t_own);
-      std::vector<Tensor<1, dim>> normals(own.n_quadrature_points);
-      for (unsigned int q = 0; q < normals.size(); ++q)
-        normals[nearest<dim>(other.get_quadrature_points(),
-                             own.quadrature_point(q))] = own.normal_vector(q);
-      tractions<dim>(other, results.stress, components, t_other, &normals);
-      double sum = 0, area = 0;
+      const auto sigma       = stresses<dim>(own, results.stress);
+      const auto sigma_other = stresses<dim>(other, results.stress);
+      double     sum = 0, area = 0;
       for (unsigned int q = 0; q < own.n_quadrature_points; ++q)
         {
           const unsigned int o = nearest<dim>(other.get_quadrature_points(),
                                               own.quadrature_point(q));
-          sum += (t_own[q] - t_other[o]).norm_square() * own.JxW(q);
+          sum +=
+            ((sigma[q] - sigma_other[o]) * own.normal_vector(q)).norm_square() *
+            own.JxW(q);
           area += own.JxW(q);
         }
-      const double h = std::pow(area, 1. / (dim - 1));
-      return 0.5 * h * sum;
+      return 0.5 * std::pow(area, 1. / (dim - 1)) * sum;
     };
 
     indicators.reinit(results.triangulation().n_active_cells());
@@ -101,9 +93,9 @@ namespace hrcontact
                 if (held)
                   continue;
                 own_face.reinit(cell, f);
-                tractions<dim>(own_face, results.stress, components, t_own);
-                double sum = 0, area = 0;
-                for (unsigned int q = 0; q < t_own.size(); ++q)
+                const auto sigma = stresses<dim>(own_face, results.stress);
+                double     sum = 0, area = 0;
+                for (unsigned int q = 0; q < sigma.size(); ++q)
                   {
                     const Point<dim>     &x = own_face.quadrature_point(q);
                     const Tensor<1, dim> &n = own_face.normal_vector(q);
@@ -122,7 +114,7 @@ namespace hrcontact
                         for (unsigned int d = 0; d < dim; ++d)
                           t[d] -= applied[d] * n[d];
                       }
-                    sum += (t_own[q] - t).norm_square() * own_face.JxW(q);
+                    sum += (sigma[q] * n - t).norm_square() * own_face.JxW(q);
                     area += own_face.JxW(q);
                   }
                 eta2 += std::pow(area, 1. / (dim - 1)) * sum;
