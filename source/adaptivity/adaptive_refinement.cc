@@ -33,17 +33,43 @@ namespace hrcontact
                           RefinementIndicatorFactory<dim>::descriptions() +
                           ". Each cell's indicator goes to solution.vtu "
                           "(refinement_indicator).");
+      prm.declare_entry(
+        "Marking",
+        "fixed number",
+        Patterns::Selection("fixed number|fixed fraction"),
+        "What the fractions count. fixed number: cells (step-42's "
+        "refine_and_coarsen_fixed_number: the mesh grows by about the same "
+        "factor each cycle, wherever the error is). fixed fraction: the "
+        "squared estimate (Doerfler's bulk marking: the fewest cells that "
+        "carry Refine fraction of the sum of squared indicators are refined, "
+        "the most that carry Coarsen fraction of it coarsened), so a "
+        "concentrated error refines few cells.");
       prm.declare_entry("Refine fraction",
                         "0.3",
                         Patterns::Double(),
-                        "The fraction of all cells, those with the largest "
-                        "indicators, refined in each cycle (in [0, 1]).");
+                        "The fraction of all cells (Marking = fixed number) "
+                        "or of the squared estimate (fixed fraction), those "
+                        "with the largest indicators, refined in each cycle "
+                        "(in [0, 1]).");
       prm.declare_entry("Coarsen fraction",
                         "0.03",
                         Patterns::Double(),
-                        "The fraction of all cells, those with the smallest "
-                        "indicators, coarsened in each cycle (in [0, 1]; "
-                        "never below the global refinements).");
+                        "The fraction of all cells (or of the squared "
+                        "estimate), those with the smallest indicators, "
+                        "coarsened in each cycle (in [0, 1]; never below the "
+                        "global refinements).");
+      prm.declare_entry(
+        "Carry state",
+        "true",
+        Patterns::Bool(),
+        "Each cycle's contact iteration starts from the previous cycle's "
+        "pressed set, multipliers and penalties, carried to the new mesh by "
+        "position (pressures per tributary length), and CG from its "
+        "displacements, instead of from the trial solution and coarser "
+        "levels of its own. The answer is the same to the tolerance; Hertz "
+        "from 4 refinements: 2 linear solves per cycle instead of 2-3 after "
+        "about 30 on coarser levels (doc/adaptivity.md). false: every cycle "
+        "from the start (for comparison).");
       prm.declare_entry("Maximum dofs",
                         "0",
                         Patterns::Integer(0),
@@ -62,7 +88,12 @@ namespace hrcontact
     estimator        = Utilities::trim(prm.get("Estimator"));
     refine_fraction  = prm.get_double("Refine fraction");
     coarsen_fraction = prm.get_double("Coarsen fraction");
-    maximum_dofs     = prm.get_integer("Maximum dofs");
+    fixed_fraction =
+      get_selection<bool>(prm,
+                          "Marking",
+                          {{"fixed number", false}, {"fixed fraction", true}});
+    maximum_dofs = prm.get_integer("Maximum dofs");
+    carry_state  = prm.get_bool("Carry state");
     prm.leave_subsection();
     const std::string where = "Mesh refinement/";
     for (const auto &[name, value] :
@@ -117,8 +148,28 @@ namespace hrcontact
       all.insert(all.end(), part.begin(), part.end());
     std::sort(all.begin(), all.end(), std::greater<float>());
     const std::size_t n         = all.size();
-    const std::size_t n_refine  = std::size_t(refine_fraction * n);
-    const std::size_t n_coarsen = std::size_t(coarsen_fraction * n);
+    std::size_t       n_refine  = std::size_t(refine_fraction * n);
+    std::size_t       n_coarsen = std::size_t(coarsen_fraction * n);
+    if (fixed_fraction)
+      {
+        // Doerfler: the largest indicators until their squares reach the
+        // fraction of the total; the smallest up to theirs.
+        double total = 0;
+        for (const float eta : all)
+          total += double(eta) * eta;
+        double sum = 0;
+        for (n_refine = 0; n_refine < n && sum < refine_fraction * total;
+             ++n_refine)
+          sum += double(all[n_refine]) * all[n_refine];
+        sum = 0;
+        for (n_coarsen = 0; n_coarsen < n - n_refine; ++n_coarsen)
+          {
+            const double eta = all[n - 1 - n_coarsen];
+            if (sum + eta * eta > coarsen_fraction * total)
+              break;
+            sum += eta * eta;
+          }
+      }
     // Refine the cells at or above the n_refine-th largest indicator,
     // coarsen those at or below the n_coarsen-th smallest.
     const float refine_above =

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <memory>
 #include <sstream>
 
 namespace hrcontact
@@ -23,11 +24,17 @@ namespace hrcontact
     refinement.parse_parameters(prm);
     const auto estimator =
       RefinementIndicatorFactory<dim>::create(refinement.estimator);
+    // The previous cycle's problem lives on until the next has carried its
+    // state.
+    std::unique_ptr<HRProblem<dim>> previous;
     for (unsigned int cycle = 0;; ++cycle)
       {
-        Timer          timer;
-        HRProblem<dim> problem(prm, communicator);
-        problem.refine_adaptively(refinement);
+        Timer timer;
+        auto  current = std::make_unique<HRProblem<dim>>(prm, communicator);
+        HRProblem<dim> &problem = *current;
+        problem.refine_adaptively(refinement,
+                                  refinement.carry_state ? previous.get() :
+                                                           nullptr);
         std::ostringstream cycle_log;
         const bool         last_possible = cycle == refinement.n_cycles;
         // The last cycle speaks as a run without cycles does.
@@ -40,7 +47,10 @@ namespace hrcontact
         record.displacement_dofs = r.system.n_displacement_dofs;
         record.estimate          = std::sqrt(
           Utilities::MPI::sum(indicators.norm_sqr(), r.partition.communicator));
-        record.seconds = timer.wall_time();
+        record.seconds       = timer.wall_time();
+        record.linear_solves = r.solve.linear_statistics.solves;
+        record.carried_start = r.contact && !r.contact->start_origin.empty() &&
+                               r.coarse_levels.empty();
         refinement.cycles.push_back(record);
         log << "  adaptive cycle " << cycle << ": " << record.cells
             << " cells, " << record.displacement_dofs << " dofs, "
@@ -68,6 +78,7 @@ namespace hrcontact
         refinement.history.push_back(refinement.mark(r.triangulation(),
                                                      indicators,
                                                      r.partition.communicator));
+        previous = std::move(current);
       }
   }
 

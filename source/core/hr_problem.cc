@@ -73,10 +73,13 @@ namespace hrcontact
 
   template <int dim>
   void
-  HRProblem<dim>::refine_adaptively(const AdaptiveRefinement<dim> &cycles)
+  HRProblem<dim>::refine_adaptively(const AdaptiveRefinement<dim> &cycles,
+                                    const HRProblem<dim> *previous_cycle)
   {
     scene.adaptive.history = cycles.history;
     scene.adaptive.cycles  = cycles.cycles;
+    if (previous_cycle)
+      nested.carry_from(previous_cycle->results());
   }
 
   template <int dim>

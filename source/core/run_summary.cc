@@ -48,7 +48,7 @@ namespace hrcontact
     if (cycles.empty())
       return;
     // One value per cycle, comma-separated, oldest first.
-    std::ostringstream cells, dofs, estimates, seconds;
+    std::ostringstream cells, dofs, estimates, seconds, solves, carried;
     double             total = 0;
     for (unsigned int k = 0; k < cycles.size(); ++k)
       {
@@ -57,6 +57,8 @@ namespace hrcontact
         dofs << sep << cycles[k].displacement_dofs;
         estimates << sep << std::setprecision(6) << cycles[k].estimate;
         seconds << sep << std::setprecision(4) << cycles[k].seconds;
+        solves << sep << cycles[k].linear_solves;
+        carried << sep << (cycles[k].carried_start ? 1 : 0);
         total += cycles[k].seconds;
       }
     summary.add("adaptive_cycles", cycles.size() - 1);
@@ -65,6 +67,8 @@ namespace hrcontact
     summary.add("adaptive_cycle_dofs", dofs.str());
     summary.add("adaptive_cycle_estimates", estimates.str());
     summary.add("adaptive_cycle_seconds", seconds.str());
+    summary.add("adaptive_cycle_linear_solves", solves.str());
+    summary.add("adaptive_cycle_carried_start", carried.str());
     summary.add("adaptive_total_seconds", total);
   }
 

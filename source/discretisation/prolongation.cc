@@ -61,7 +61,26 @@ namespace hrcontact
           return;
         }
       if (!f->has_children())
-        return; // finer on the coarse mesh here: not a first guess's case
+        {
+          // Finer on the coarser mesh here (an adaptive cycle coarsened
+          // it): Q1 vertex v of a cell is vertex v of its child v.
+          if (!f->is_locally_owned() || fe.degree != 1)
+            return;
+          for (const unsigned int v : f->vertex_indices())
+            {
+              Cell d = c;
+              while (!d->is_active())
+                d = d->child(v);
+              if (d->is_artificial())
+                return;
+              d->get_dof_values(coarse, parent_values);
+              for (unsigned int k = 0; k < fe.n_components(); ++k)
+                values[fe.component_to_system_index(k, v)] =
+                  parent_values[fe.component_to_system_index(k, v)];
+            }
+          write(f, values);
+          return;
+        }
       for (unsigned int k = 0; k < c->n_children(); ++k)
         visit(c->child(k), f->child(k));
     };

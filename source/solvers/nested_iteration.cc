@@ -2,6 +2,7 @@
 #include <hrcontact/solvers/nested_iteration.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace hrcontact
@@ -9,12 +10,13 @@ namespace hrcontact
   using namespace dealii;
 
   ContactStart
-  transfer_contact_state(const EquilibriumSystem &coarse,
-                         const ContactIteration  &coarse_state,
-                         const EquilibriumSystem &fine,
-                         const double             reaction_scale,
-                         const double             compliance_scale,
-                         const bool               may_measure_scale)
+  transfer_rows_by_position(
+    const EquilibriumSystem                                 &coarse,
+    const ContactIteration                                  &coarse_state,
+    const EquilibriumSystem                                 &fine,
+    const std::function<double(unsigned int, unsigned int)> &reaction_scale,
+    const std::function<double(unsigned int, unsigned int)> &compliance_scale,
+    const double default_compliance_scale)
   {
     const unsigned int nc = coarse.contact_rows.size(),
                        nf = fine.contact_rows.size();
@@ -52,21 +54,6 @@ namespace hrcontact
     };
 
     ContactStart start;
-    if (coarse_state.scale_per_level > 0)
-      {
-        start.tolerance_scale =
-          coarse_state.tolerance_scale * coarse_state.scale_per_level;
-        start.scale_per_level = coarse_state.scale_per_level;
-      }
-    else if (may_measure_scale)
-      {
-        // Measured on this level against the coarser level's trial scale.
-        start.tolerance_scale     = coarse_state.tolerance_scale;
-        start.measure_trial_scale = true;
-      }
-    else
-      start.tolerance_scale = coarse_state.tolerance_scale * reaction_scale;
-    start.smallest_scale_per_level = reaction_scale;
     start.mu.assign(nf, 0.);
     start.alpha.assign(nf, 0.);
     start.p.assign(nf, 0.);
@@ -99,20 +86,53 @@ namespace hrcontact
         if (nearest.empty())
           {
             // No coarse row of this kind: start it as the trial does.
-            start.alpha[i] = alpha_default * compliance_scale;
+            start.alpha[i] = alpha_default * default_compliance_scale;
             continue;
           }
         for (const unsigned int j : nearest)
           {
             start.mu[i] += coarse_state.mu[j];
-            start.alpha[i] += coarse_state.alpha[j];
-            start.p[i] += coarse_state.p[j];
+            start.alpha[i] += coarse_state.alpha[j] * compliance_scale(i, j);
+            start.p[i] += coarse_state.p[j] * reaction_scale(i, j);
           }
         const double n = nearest.size();
         start.mu[i] /= n;
-        start.alpha[i] *= compliance_scale / n;
-        start.p[i] *= reaction_scale / n;
+        start.alpha[i] /= n;
+        start.p[i] /= n;
       }
+    return start;
+  }
+
+  ContactStart
+  transfer_contact_state(const EquilibriumSystem &coarse,
+                         const ContactIteration  &coarse_state,
+                         const EquilibriumSystem &fine,
+                         const double             reaction_scale,
+                         const double             compliance_scale,
+                         const bool               may_measure_scale)
+  {
+    ContactStart start = transfer_rows_by_position(
+      coarse,
+      coarse_state,
+      fine,
+      [&](unsigned int, unsigned int) { return reaction_scale; },
+      [&](unsigned int, unsigned int) { return compliance_scale; },
+      compliance_scale);
+    if (coarse_state.scale_per_level > 0)
+      {
+        start.tolerance_scale =
+          coarse_state.tolerance_scale * coarse_state.scale_per_level;
+        start.scale_per_level = coarse_state.scale_per_level;
+      }
+    else if (may_measure_scale)
+      {
+        // Measured on this level against the coarser level's trial scale.
+        start.tolerance_scale     = coarse_state.tolerance_scale;
+        start.measure_trial_scale = true;
+      }
+    else
+      start.tolerance_scale = coarse_state.tolerance_scale * reaction_scale;
+    start.smallest_scale_per_level = reaction_scale;
     return start;
   }
 

@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 
+#include <hrcontact/adaptivity/cycle_state_transfer.h>
 #include <hrcontact/core/hr_problem.h>
 #include <hrcontact/core/run.h>
 #include <hrcontact/discretisation/prolongation.h>
@@ -44,13 +45,34 @@ namespace hrcontact
   }
 
   template <int dim>
+  void
+  NestedLevelRunner<dim>::carry_from(const Results<dim> &previous)
+  {
+    previous_cycle = &previous;
+  }
+
+  template <int dim>
+  bool
+  NestedLevelRunner<dim>::carries_state(
+    const SolutionPath               path,
+    const AugmentedLagrangianSolver &contact_solver,
+    const Results<dim>              &r) const
+  {
+    using Regularisation    = AugmentedLagrangianSolver::Regularisation;
+    const Scene<dim> &scene = r.scene;
+    return r.has_contact && path == SolutionPath::condensed &&
+           contact_solver.regularisation == Regularisation::consistent &&
+           !scene.has_changing_rows() && scene.all_linear() &&
+           !scene.stress_constraint;
+  }
+
+  template <int dim>
   unsigned int
   NestedLevelRunner<dim>::levels_to_solve(
     const SolutionPath               path,
     const AugmentedLagrangianSolver &contact_solver,
     const Results<dim>              &r) const
   {
-    using Regularisation    = AugmentedLagrangianSolver::Regularisation;
     const Scene<dim> &scene = r.scene;
     // Automatic levels for the consistent AL only: the Macaulay AL's kink
     // at p = 0 makes its diagonal scheme cycle from a carried state (Hertz
@@ -61,12 +83,8 @@ namespace hrcontact
     // which each material step's contact solve starts from anyway (the
     // no-tension pier at 128 x 768 cells: 760 s of coarse levels, the fine
     // level's iteration the same; doc/materials.md).
-    const bool applies =
-      r.has_contact && path == SolutionPath::condensed &&
-      contact_solver.regularisation == Regularisation::consistent &&
-      !scene.has_changing_rows() && scene.all_linear() &&
-      !scene.stress_constraint;
-    const unsigned int levels = settings.levels(scene.global_refinements,
+    const bool         applies = carries_state(path, contact_solver, r);
+    const unsigned int levels  = settings.levels(scene.global_refinements,
                                                 r.system.n_displacement_dofs,
                                                 dim,
                                                 applies);
@@ -100,6 +118,16 @@ namespace hrcontact
                               std::ostream              &log) const
   {
     r.coarse_levels.clear();
+    if (previous_cycle && previous_cycle->converged() &&
+        previous_cycle->contact && carries_state(path, contact_solver, r))
+      {
+        // An adaptive cycle: the previous cycle's mesh is the coarser level.
+        contact_solver.start_from(carry_contact_state(*previous_cycle, r));
+        linear_solver.starts_from_coarser_level = true;
+        start_displacements(
+          *previous_cycle, path, linear_solver, r, coarse_start);
+        return;
+      }
     const unsigned int levels = levels_to_solve(path, contact_solver, r);
     if (levels == 0)
       return;
@@ -178,6 +206,18 @@ namespace hrcontact
                                                      compliance_scale,
                                                      !finest_level));
     linear_solver.starts_from_coarser_level = true;
+    start_displacements(c, path, linear_solver, r, coarse_start);
+  }
+
+  template <int dim>
+  void
+  NestedLevelRunner<dim>::start_displacements(
+    const Results<dim>         &coarse,
+    const SolutionPath          path,
+    const LinearSolverSettings &linear_solver,
+    const Results<dim>         &r,
+    FieldVector                &coarse_start) const
+  {
     // CG's first guess: the coarser answer, about an h^2 error away in
     // displacement (Hertz refinement 9: the first fine solve takes 77 CG
     // iterations instead of 100 from zero).
@@ -186,8 +226,8 @@ namespace hrcontact
           LinearSolverKind::cg_amg)
       {
         reinit_field(coarse_start, r.spaces.dof_handler_displacement);
-        prolongate_to_finer_mesh(c.spaces.dof_handler_displacement,
-                                 c.displacement,
+        prolongate_to_finer_mesh(coarse.spaces.dof_handler_displacement,
+                                 coarse.displacement,
                                  r.spaces.dof_handler_displacement,
                                  coarse_start);
       }

@@ -32,6 +32,11 @@ namespace hrcontact
     double       seconds = 0;
     /** sqrt(sum of the squared cell indicators). */
     double estimate = 0;
+    /** The linear solves of the contact iteration on this cycle's mesh
+     * (nested iteration's coarser levels not counted). */
+    unsigned int linear_solves = 0;
+    /** Whether it started from the previous cycle's state (Carry state). */
+    bool carried_start = false;
   };
 
   /**
@@ -60,6 +65,11 @@ namespace hrcontact
     std::string  estimator        = "kelly";
     double       refine_fraction  = 0.3;
     double       coarsen_fraction = 0.03;
+    /** Marking = fixed fraction (Doerfler) rather than fixed number. */
+    bool fixed_fraction = false;
+    /** Each cycle starts from the previous cycle's contact state and
+     * displacements (Carry state). */
+    bool carry_state = true;
     /** 0: no ceiling. */
     unsigned int maximum_dofs = 0;
 

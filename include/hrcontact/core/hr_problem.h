@@ -57,10 +57,13 @@ namespace hrcontact
     /**
      * An adaptive cycle (run_adaptive_cycles): the mesh replays the steps
      * of the cycles before (call before solve()), and summary.txt lists
-     * their records (call again before output_results()).
+     * their records (call again before output_results()). The contact
+     * iteration and CG start from @p previous_cycle's answer, if given (it
+     * must outlive solve()).
      */
     void
-    refine_adaptively(const AdaptiveRefinement<dim> &cycles);
+    refine_adaptively(const AdaptiveRefinement<dim> &cycles,
+                      const HRProblem<dim>          *previous_cycle = nullptr);
 
     /** Everything up to and including the solve; no files written. */
     void

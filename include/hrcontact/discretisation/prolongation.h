@@ -13,7 +13,9 @@ namespace hrcontact
    * owned fine cell takes its parent's values through the element's
    * prolongation matrices, or its own cell's where the two meshes agree.
    * The two meshes are walked together from their coarse cells, so that no
-   * point is searched. Entries whose parent this process does not have (an
+   * point is searched. Where the coarser mesh is finer instead (an
+   * adaptive cycle coarsened there), a Q1 cell takes its descendants'
+   * values at its vertices. Entries whose parent this process does not have (an
    * artificial cell of a distributed coarse mesh) stay zero: a first guess
    * only needs to be good, not complete. Both DoFHandlers carry the same
    * element; @p coarse has its ghost values (FieldVector); @p fine is sized

@@ -78,6 +78,10 @@ namespace hrcontact
      */
     unsigned int rows_owned = 0, rows_seen = 0;
 
+    /** Where the last solve started (ContactStart::origin), empty: from
+     * the trial solution. */
+    std::string start_origin;
+
     /** The initial compliance alpha_0 the iteration started from. */
     double alpha_0 = 0;
 

@@ -7,6 +7,7 @@
 #include <hrcontact/solvers/contact_iteration.h>
 
 #include <algorithm>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,26 @@ namespace hrcontact
       return mu.size() == n && alpha.size() == n && p.size() == n;
     }
   };
+
+  /**
+   * The per-row part of transfer_contact_state, for any two meshes of one
+   * scene: each row of `fine` takes the average state of the rows of
+   * `coarse` of its kind nearest its node (several at one distance: the
+   * midpoints of a refinement; a node both meshes have: its own state),
+   * the reaction of coarse row j times reaction_scale(i, j), the compliance
+   * times compliance_scale(i, j). A row no coarse row matches starts as the
+   * trial does, at the largest coarse compliance times
+   * `default_compliance_scale`. The tolerance's fields are left to the
+   * caller.
+   */
+  ContactStart
+  transfer_rows_by_position(
+    const EquilibriumSystem                                 &coarse,
+    const ContactIteration                                  &coarse_state,
+    const EquilibriumSystem                                 &fine,
+    const std::function<double(unsigned int, unsigned int)> &reaction_scale,
+    const std::function<double(unsigned int, unsigned int)> &compliance_scale,
+    const double default_compliance_scale);
 
   /**
    * The state a converged contact iteration on a coarser mesh leaves,

@@ -58,6 +58,14 @@ namespace hrcontact
     take_request(const CoarserLevelRequest &request);
 
     /**
+     * An adaptive cycle: start from the previous cycle's converged state
+     * (carry_contact_state) and displacements instead of coarser levels,
+     * where a state carries at all. @p previous must outlive run().
+     */
+    void
+    carry_from(const Results<dim> &previous);
+
+    /**
      * Solve the coarser levels first, when they apply; results gets
      * coarse_levels, the contact solver its start, linear_solver its
      * starts_from_coarser_level and `coarse_start` the coarser level's
@@ -74,6 +82,19 @@ namespace hrcontact
     NestedIterationSettings settings;
 
   private:
+    /** Whether a carried contact state applies to this run: the condensed
+     * path, the consistent AL, fixed rows, linear laws and materials. */
+    bool
+    carries_state(const SolutionPath               path,
+                  const AugmentedLagrangianSolver &contact_solver,
+                  const Results<dim>              &results) const;
+    /** CG's first guess from @p coarse's displacements (CG only). */
+    void
+    start_displacements(const Results<dim>         &coarse,
+                        const SolutionPath          path,
+                        const LinearSolverSettings &linear_solver,
+                        const Results<dim>         &results,
+                        FieldVector                &coarse_start) const;
     /** How many coarser levels this run solves; refuses what cannot be
      * nested. */
     unsigned int
@@ -87,6 +108,8 @@ namespace hrcontact
      * tolerance's force scale shrinks per level (a trial solve of their
      * own), the scene's mesh never pays for it. */
     bool finest_level = true;
+    /** The previous adaptive cycle's results (carry_from), or none. */
+    const Results<dim> *previous_cycle = nullptr;
   };
 } // namespace hrcontact
 

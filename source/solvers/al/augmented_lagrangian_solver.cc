@@ -442,6 +442,7 @@ namespace hrcontact
 
     const bool started          = has_start;
     has_start                   = false;
+    state.start_origin          = started ? start.origin : std::string();
     const double measured_scale = trial_step(system, path, load_scale, started);
     log_start(nq, started, measured_scale, log);
 
