@@ -32,6 +32,7 @@ main()
                                  "adaptive-fractions-sum",
                                  "adaptive-estimator",
                                  "adaptive-null-space",
+                                 "adaptive-contact-pairs",
                                  "bodies-overlap",
                                  "pair-out-of-reach",
                                  "traction-missing-id",

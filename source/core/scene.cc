@@ -6,6 +6,7 @@
 
 #include <deal.II/distributed/tria_base.h>
 
+#include <hrcontact/constraints/contact_pairs.h>
 #include <hrcontact/core/scene.h>
 #include <hrcontact/geometry/multi_body_grid.h>
 #include <hrcontact/geometry/tunnel_lining_grid.h>
@@ -178,6 +179,16 @@ namespace hrcontact
     prm.leave_subsection();
 
     constraints = ConstraintSources<dim>::create(prm, constants);
+    // Pair rows are built from the conforming surface nodes of both bodies;
+    // the hanging nodes' shares do not reach them yet (two cylinders at 7k
+    // dofs: 5.5 % off the peak where the uniform mesh is 0.3 % off).
+    for (const auto &source : constraints)
+      if (refined_locally() &&
+          dynamic_cast<const ContactPairs<dim> *>(source.get()))
+        throw InputError(
+          "Contact/Contact pairs with Mesh refinement (Region refinements or "
+          "Adaptive cycles): contact between bodies is not supported on a "
+          "locally refined mesh yet; use Global refinements.");
 
     grid                    = MeshGeneratorFactory<dim>::create(grid_generator,
                                              grid_arguments,
