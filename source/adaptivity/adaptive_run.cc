@@ -55,8 +55,11 @@ namespace hrcontact
         log << "  adaptive cycle " << cycle << ": " << record.cells
             << " cells, " << record.displacement_dofs << " dofs, "
             << refinement.estimator << " estimate " << std::setprecision(4)
-            << record.estimate << ", " << std::setprecision(3) << record.seconds
-            << " s" << std::endl;
+            << record.estimate << ", " << record.linear_solves
+            << (record.linear_solves == 1 ? " linear solve" : " linear solves")
+            << (record.carried_start ? " from the previous cycle's state" : "")
+            << ", " << std::setprecision(3) << record.seconds << " s"
+            << std::endl;
         const bool last = last_possible ||
                           (refinement.maximum_dofs > 0 &&
                            record.displacement_dofs >= refinement.maximum_dofs);
