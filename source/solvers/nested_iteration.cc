@@ -89,16 +89,22 @@ namespace hrcontact
             start.alpha[i] = alpha_default * default_compliance_scale;
             continue;
           }
+        // Each term relative to the first row's scale, which multiplies
+        // the sum: uniform scales then add the plain values (the nested
+        // iteration's starts stay the same to the last bit).
+        const unsigned int j0 = nearest.front();
+        const double c0 = compliance_scale(i, j0), r0 = reaction_scale(i, j0);
         for (const unsigned int j : nearest)
           {
             start.mu[i] += coarse_state.mu[j];
-            start.alpha[i] += coarse_state.alpha[j] * compliance_scale(i, j);
-            start.p[i] += coarse_state.p[j] * reaction_scale(i, j);
+            start.alpha[i] +=
+              coarse_state.alpha[j] * (compliance_scale(i, j) / c0);
+            start.p[i] += coarse_state.p[j] * (reaction_scale(i, j) / r0);
           }
         const double n = nearest.size();
         start.mu[i] /= n;
-        start.alpha[i] /= n;
-        start.p[i] /= n;
+        start.alpha[i] *= c0 / n;
+        start.p[i] *= r0 / n;
       }
     return start;
   }
