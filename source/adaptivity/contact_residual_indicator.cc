@@ -60,13 +60,13 @@ namespace hrcontact
         const unsigned int i    = cell->active_cell_index();
         const double       c    = compliance(cell);
         double             eta2 = c * indicators[i] * indicators[i];
+        contact_cell->get_dof_values(fields.get_status(), status);
         for (const unsigned int f : cell->face_indices())
           {
             if (!cell->at_boundary(f))
               continue;
             // A contact face: every node has a contact row (status >= 1).
             bool all = true;
-            contact_cell->get_dof_values(fields.get_status(), status);
             for (const unsigned int v : cell->face(f)->vertex_indices())
               all &=
                 status[GeometryInfo<dim>::face_to_cell_vertices(f, v)] >= 1;

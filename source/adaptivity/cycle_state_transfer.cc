@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.templates.h>
 
 #include <hrcontact/adaptivity/cycle_state_transfer.h>
+#include <hrcontact/postprocess/contact_fields.h>
 
 #include <cmath>
 #include <map>
@@ -18,23 +19,9 @@ namespace hrcontact
     std::map<unsigned int, double> node_measure;
     for (unsigned int k = 0; k < nq; ++k)
       node_measure[system.rows[system.contact_rows[k]].node] = 0;
-    for (const auto &cell :
-         results.spaces.dof_handler_displacement.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            {
-              const auto face = cell->face(f);
-              bool       all  = true;
-              for (const auto v : face->vertex_indices())
-                all &=
-                  node_measure.count(face->vertex_dof_index(v, 0) / dim) > 0;
-              if (!all)
-                continue;
-              const double share = face->measure() / face->n_vertices();
-              for (const auto v : face->vertex_indices())
-                node_measure[face->vertex_dof_index(v, 0) / dim] += share;
-            }
+    add_contact_tributaries(results.spaces.dof_handler_displacement,
+                            true,
+                            node_measure);
     std::vector<double> tributary(nq);
     for (unsigned int k = 0; k < nq; ++k)
       tributary[k] = node_measure[system.rows[system.contact_rows[k]].node];

@@ -31,6 +31,29 @@ namespace hrcontact
   } // namespace
 
   template <int dim>
+  void
+  add_contact_tributaries(const DoFHandler<dim>          &displacement_dofs,
+                          const bool                      owned_only,
+                          std::map<unsigned int, double> &tributary)
+  {
+    for (const auto &cell : displacement_dofs.active_cell_iterators())
+      if (owned_only ? cell->is_locally_owned() : !cell->is_artificial())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const auto face = cell->face(f);
+              bool       all  = true;
+              for (const auto v : face->vertex_indices())
+                all &= tributary.count(face->vertex_dof_index(v, 0) / dim) > 0;
+              if (!all)
+                continue;
+              const double share = face->measure() / face->n_vertices();
+              for (const auto v : face->vertex_indices())
+                tributary[face->vertex_dof_index(v, 0) / dim] += share;
+            }
+  }
+
+  template <int dim>
   ContactFields<dim>::ContactFields(const Results<dim> &results)
     : fe(1)
     , dof_handler(results.triangulation())
@@ -55,21 +78,12 @@ namespace hrcontact
     // Tributary measures from the contact faces of this process's own and
     // ghost cells: complete for every node of its own cells.
     const auto &u_dofs = results.spaces.dof_handler_displacement;
-    for (const auto &cell : u_dofs.active_cell_iterators())
-      if (!cell->is_artificial())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            {
-              const auto face = cell->face(f);
-              bool       all  = true;
-              for (const auto v : face->vertex_indices())
-                all &= nodes.count(face->vertex_dof_index(v, 0) / dim) > 0;
-              if (!all)
-                continue;
-              const double share = face->measure() / face->n_vertices();
-              for (const auto v : face->vertex_indices())
-                nodes[face->vertex_dof_index(v, 0) / dim].tributary += share;
-            }
+    std::map<unsigned int, double> tributary;
+    for (const auto &[node, c] : nodes)
+      tributary[node] = 0;
+    add_contact_tributaries(u_dofs, false, tributary);
+    for (auto &[node, c] : nodes)
+      c.tributary = tributary[node];
 
     dof_handler.distribute_dofs(fe);
     reinit_field(pressure, dof_handler);
@@ -106,6 +120,14 @@ namespace hrcontact
     data_out.add_data_vector(dof_handler, status, "contact_status");
   }
 
+  template void
+  add_contact_tributaries<2>(const DoFHandler<2> &,
+                             const bool,
+                             std::map<unsigned int, double> &);
+  template void
+  add_contact_tributaries<3>(const DoFHandler<3> &,
+                             const bool,
+                             std::map<unsigned int, double> &);
   template class ContactFields<2>;
   template class ContactFields<3>;
 } // namespace hrcontact

@@ -10,8 +10,23 @@
 #include <hrcontact/core/results.h>
 #include <hrcontact/discretisation/field_vector.h>
 
+#include <map>
+
 namespace hrcontact
 {
+  /**
+   * Add to each node of @p tributary (keyed by node: displacement dof / dim)
+   * its share of the boundary faces whose nodes are all keys: the face's
+   * measure over its vertices. Over this process's own cells only
+   * (`owned_only`: sum over the processes afterwards) or its own and ghost
+   * cells (complete for every node of its own cells, no communication).
+   */
+  template <int dim>
+  void
+  add_contact_tributaries(const dealii::DoFHandler<dim>  &displacement_dofs,
+                          const bool                      owned_only,
+                          std::map<unsigned int, double> &tributary);
+
   /**
    * The contact rows (unilateral contact and constraint laws such as stops)
    * as nodal fields for ParaView, on a scalar Q1 space of the mesh:
