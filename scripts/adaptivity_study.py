@@ -1,7 +1,17 @@
 #!/usr/bin/env python3
-"""Adaptive against uniform refinement on Hertz (issue 51): error against
+"""Adaptive against uniform refinement (issue 51): error against
 displacement dofs and against total wall time, for uniform refinement and
 each estimator and marking, on the condensed path (Path = condensed).
+
+PROBLEM=hertz (default): Hertz, parameters/hertz.prm, against the uniform
+r10 below. PROBLEM=two-cylinders: parameters/two-cylinders.prm with the
+mortar pair method and the direct solver (CG + AMG does not converge on the
+two bodies held only by their contact at 7 refinements), against its
+closed form (peak pressure, half width a) and for the largest displacement
+against the uniform r9 (REFERENCE=1 recomputes it: about 3.1 million dofs);
+writes doc/adaptivity-two-cylinders-data.csv and
+doc/figures/adaptivity-two-cylinders.png. A run that fails (a cycle whose
+contact iteration does not converge) ends its sequence and is reported.
 
 For each sequence, every point is a run of its own (the uniform mesh of
 Global refinements r, or the adaptive run with Adaptive cycles = k from 4
@@ -35,6 +45,26 @@ REFERENCE = {"peak_pressure": 1.150993803e10,
              "contact_zone_x_max": 0.00500503129,
              "max_abs_displacement_component": 0.001150651596}
 
+PROBLEM = os.environ.get("PROBLEM", "hertz")
+if PROBLEM == "two-cylinders":
+    SCENE = "two-cylinders.prm"
+    SCENE_EXTRA = ("subsection Contact\n  set Pair method = mortar\nend\n"
+                   "subsection Linear solver\n  set Solver = direct\nend\n")
+    # The closed form (P for a = 0.1 R1), and the uniform r9 (mortar,
+    # 3,151,876 dofs, 2026-11-28) for the largest displacement.
+    REFERENCE = {"peak_pressure": 4326923077.,
+                 "contact_zone_x_max": 0.005,
+                 "max_abs_displacement_component": None}
+    REFERENCE_REFINEMENTS = 9
+    CSV = "adaptivity-two-cylinders-data.csv"
+    PNG = "adaptivity-two-cylinders.png"
+else:
+    SCENE = "hertz.prm"
+    SCENE_EXTRA = ""
+    REFERENCE_REFINEMENTS = 10
+    CSV = "adaptivity-data.csv"
+    PNG = "adaptivity-hertz.png"
+
 SEQUENCES = [
     # name, estimator, marking, refine fraction, largest k
     ("uniform", None, None, None, None),
@@ -60,10 +90,11 @@ def read_summary(path):
 
 
 def run(name, extra, mpi=0):
-    directory = os.path.join(WORK, name)
-    prm = os.path.join(WORK, name + ".prm")
-    with open(os.path.join(ROOT, "parameters", "hertz.prm")) as f:
-        text = f.read()
+    directory = os.path.join(WORK, PROBLEM, name)
+    os.makedirs(os.path.join(WORK, PROBLEM), exist_ok=True)
+    prm = os.path.join(WORK, PROBLEM, name + ".prm")
+    with open(os.path.join(ROOT, "parameters", SCENE)) as f:
+        text = f.read() + SCENE_EXTRA
     # The condensed path everywhere: at 4 refinements the automatic choice
     # takes the dense null-space path (12 s instead of 0.2 s), which is not
     # what a refinement study compares.
@@ -80,29 +111,33 @@ def run(name, extra, mpi=0):
     seconds = []
     for _ in range(REPEATS if not mpi else 1):
         start = time.time()
-        subprocess.run(command, check=True, stdout=subprocess.DEVNULL,
-                       stderr=subprocess.DEVNULL)
+        done = subprocess.run(command, stdout=subprocess.DEVNULL,
+                              stderr=subprocess.PIPE, text=True)
         seconds.append(time.time() - start)
+        if done.returncode != 0:
+            return {"failed": done.stderr.strip().splitlines()[-1]}
     values = read_summary(os.path.join(directory, "summary.txt"))
     values["process_seconds"] = statistics.median(seconds)
     return values
 
 
 def errors(values):
-    return {key: float(values[key]) / ref - 1
+    return {key: (float(values[key]) / ref - 1 if ref else float("nan"))
             for key, ref in REFERENCE.items()}
 
 
 def main():
     os.makedirs(WORK, exist_ok=True)
     if os.environ.get("REFERENCE") == "1":
-        ref = run("reference-r10",
-                  "subsection Geometry\n  set Global refinements = 10\nend\n",
-                  mpi=2)
+        ref = run("reference-r%d" % REFERENCE_REFINEMENTS,
+                  "subsection Geometry\n  set Global refinements = %d\nend\n"
+                  % REFERENCE_REFINEMENTS, mpi=2 if PROBLEM == "hertz" else 0)
         for key in REFERENCE:
-            REFERENCE[key] = float(ref[key])
+            if PROBLEM == "hertz" or REFERENCE[key] is None:
+                REFERENCE[key] = float(ref[key])
         print("reference:", REFERENCE)
     rows = []
+    failures = []
     for label, estimator, marking, fraction, largest in SEQUENCES:
         steps = range(4, 9) if estimator is None else range(0, largest + 1)
         for step in steps:
@@ -118,6 +153,11 @@ def main():
                          % (step, estimator, marking, fraction))
             name = (label.replace(",", "").replace(" ", "-") + "-%d" % step)
             values = run(name, extra)
+            if "failed" in values:
+                print("%-38s %2d failed: %s" % (label, step, values["failed"]),
+                      flush=True)
+                failures.append((label, step, values["failed"]))
+                break
             e = errors(values)
             rows.append((label, step, int(values["displacement_dofs"]),
                          values["process_seconds"],
@@ -130,10 +170,12 @@ def main():
                                             100 * rows[-1][6]), flush=True)
             if int(values["displacement_dofs"]) >= MAX_DOFS:
                 break
-    csv = os.path.join(ROOT, "doc", "adaptivity-data.csv")
+    csv = os.path.join(ROOT, "doc", CSV)
     with open(csv, "w") as f:
-        f.write("# scripts/adaptivity_study.py, REPEATS=%d; errors against "
-                "uniform r10\n" % REPEATS)
+        f.write("# PROBLEM=%s scripts/adaptivity_study.py, REPEATS=%d; errors "
+                "against %s\n" % (PROBLEM, REPEATS, REFERENCE))
+        for label, step, message in failures:
+            f.write('# failed: "%s" %d: %s\n' % (label, step, message))
         f.write("sequence,step,dofs,seconds,peak_error,zone_end_error,"
                 "displacement_error\n")
         for r in rows:
@@ -146,7 +188,7 @@ def plot(rows):
     for r in rows:
         if r[0] not in labels:
             labels.append(r[0])
-    data = os.path.join(WORK, "plot.dat")
+    data = os.path.join(WORK, PROBLEM, "plot.dat")
     with open(data, "w") as f:
         for label in labels:
             f.write('"%s"\n' % label)
@@ -156,7 +198,7 @@ def plot(rows):
                             % (r[2], r[3], max(abs(r[4]), 1e-7),
                                max(abs(r[5]), 1e-7), max(abs(r[6]), 1e-8)))
             f.write("\n\n")
-    png = os.path.join(ROOT, "doc", "figures", "adaptivity-hertz.png")
+    png = os.path.join(ROOT, "doc", "figures", PNG)
     panels = [("peak pressure", 3), ("contact-zone end", 4),
               ("largest displacement", 5)]
     script = ["set terminal pngcairo size 1500,900 font ',10'",

@@ -32,7 +32,6 @@ main()
                                  "adaptive-fractions-sum",
                                  "adaptive-estimator",
                                  "adaptive-null-space",
-                                 "adaptive-contact-pairs",
                                  "bodies-overlap",
                                  "pair-out-of-reach",
                                  "traction-missing-id",

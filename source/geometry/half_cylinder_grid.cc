@@ -133,11 +133,12 @@ namespace hrcontact
   }
 
   template <int dim>
-  std::function<Point<dim>(const Point<dim> &)>
+  typename MeshGenerator<dim>::VertexMap
   HalfCylinderGrid<dim>::refined_vertex_map() const
   {
     if constexpr (dim == 2)
-      return [a = read_arguments(arguments)](const Point<dim> &x) {
+      return [a = read_arguments(arguments)](const Point<dim> &x,
+                                             const types::material_id) {
         return graded(x, a);
       };
     else

@@ -86,15 +86,15 @@ namespace hrcontact
   template <int dim>
   void
   LocalRefinement<dim>::apply(
-    Triangulation<dim>                                  &triangulation,
-    const std::function<Point<dim>(const Point<dim> &)> &place) const
+    Triangulation<dim>                           &triangulation,
+    const typename MeshGenerator<dim>::VertexMap &place) const
   {
     for (unsigned int k = 0; k < n_refinements; ++k)
       {
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             {
-              const Point<dim> c      = place(cell->center());
+              const Point<dim> c = place(cell->center(), cell->material_id());
               bool             inside = true;
               for (unsigned int d = 0; d < dim; ++d)
                 inside = inside && lower[d] <= c[d] && c[d] <= upper[d];

@@ -33,10 +33,26 @@ namespace hrcontact
   }
 
   template <int dim>
-  std::function<Point<dim>(const Point<dim> &)>
+  typename MeshGenerator<dim>::VertexMap
   MeshGenerator<dim>::refined_vertex_map() const
   {
-    return [](const Point<dim> &x) { return x; };
+    return [](const Point<dim> &x, const types::material_id) { return x; };
+  }
+
+  template <int dim>
+  void
+  MeshGenerator<dim>::move_refined_vertices(Triangulation<dim> &triangulation,
+                                            const VertexMap    &map)
+  {
+    std::vector<bool> moved(triangulation.n_vertices(), false);
+    for (const auto &cell : triangulation.cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        if (!moved[cell->vertex_index(v)])
+          {
+            cell->vertex(v) = map(cell->vertex(v), cell->material_id());
+            moved[cell->vertex_index(v)] = true;
+          }
+    triangulation.signals.mesh_movement();
   }
 
   namespace

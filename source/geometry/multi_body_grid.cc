@@ -295,9 +295,7 @@ namespace hrcontact
 
   template <int dim>
   bool
-  MultiBodyGrid<dim>::create_from_coarse_meshes(
-    Triangulation<dim> &triangulation,
-    const unsigned int  refinements) const
+  MultiBodyGrid<dim>::create_coarse(Triangulation<dim> &triangulation) const
   {
     JoinedDescription<dim> joined;
     // The bodies' manifolds, moved, under new ids (body b's id i becomes
@@ -339,30 +337,39 @@ namespace hrcontact
                                        joined.faces);
     for (const auto &[id, manifold] : manifolds)
       triangulation.set_manifold(id, *manifold);
-    triangulation.refine_global(refinements);
+    return true;
+  }
 
-    // Each body's map of the refined vertices, in its own frame.
-    std::vector<std::function<Point<dim>(const Point<dim> &)>> maps;
-    std::vector<BodyPlacement<dim>>                            placements;
+  template <int dim>
+  typename MeshGenerator<dim>::VertexMap
+  MultiBodyGrid<dim>::refined_vertex_map() const
+  {
+    std::vector<typename MeshGenerator<dim>::VertexMap> maps;
+    std::vector<BodyPlacement<dim>>                     placements;
     for (unsigned int b = 0; b < n_bodies(); ++b)
       {
         maps.push_back(grid_of(b).refined_vertex_map());
         placements.push_back(placement_of(b));
       }
-    std::vector<bool> moved(triangulation.n_vertices(), false);
-    for (const auto &cell : triangulation.cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
-        if (!moved[cell->vertex_index(v)])
-          {
-            const unsigned int b = cell->material_id();
-            cell->vertex(v) =
-              placements[b](maps[b](placements[b].inverse(cell->vertex(v))));
-            moved[cell->vertex_index(v)] = true;
-          }
+    return [maps, placements](const Point<dim> &x, const types::material_id b) {
+      AssertIndexRange(b, maps.size());
+      return placements[b](maps[b](placements[b].inverse(x), 0));
+    };
+  }
+
+  template <int dim>
+  bool
+  MultiBodyGrid<dim>::create_from_coarse_meshes(
+    Triangulation<dim> &triangulation,
+    const unsigned int  refinements) const
+  {
+    if (!create_coarse(triangulation))
+      return false;
+    triangulation.refine_global(refinements);
+    this->move_refined_vertices(triangulation, refined_vertex_map());
     // As the joined refined bodies: flat, the manifolds placed the points.
     triangulation.reset_all_manifolds();
     triangulation.set_all_manifold_ids(numbers::flat_manifold_id);
-    triangulation.signals.mesh_movement();
     return true;
   }
 

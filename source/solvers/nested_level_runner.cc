@@ -220,8 +220,11 @@ namespace hrcontact
   {
     // CG's first guess: the coarser answer, about an h^2 error away in
     // displacement (Hertz refinement 9: the first fine solve takes 77 CG
-    // iterations instead of 100 from zero).
+    // iterations instead of 100 from zero). Not between meshes of
+    // different coarse grids (a serial mesh of several bodies joins refined
+    // bodies): CG then starts from zero.
     if (settings.carry_displacements && path == SolutionPath::condensed &&
+        coarse.triangulation().n_cells(0) == r.triangulation().n_cells(0) &&
         linear_solver.choose(r.system.n_displacement_dofs, dim) ==
           LinearSolverKind::cg_amg)
       {

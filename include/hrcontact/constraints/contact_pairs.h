@@ -92,6 +92,13 @@ namespace hrcontact
       std::shared_ptr<dealii::FunctionParser<dim>> stop_values[6];
     };
 
+    /** The pairs as read. */
+    const std::vector<Pair> &
+    pair_list() const
+    {
+      return pairs;
+    }
+
     /** Where a slave node meets the master surface. */
     struct Projection
     {

@@ -11,6 +11,7 @@
 #include <hrcontact/constraints/constraint_source.h>
 #include <hrcontact/core/input.h>
 #include <hrcontact/geometry/local_refinement.h>
+#include <hrcontact/geometry/matched_contact_refinement.h>
 #include <hrcontact/geometry/mesh_generator.h>
 #include <hrcontact/geometry/tunnel_lining.h>
 #include <hrcontact/material/material_law.h>
@@ -36,6 +37,11 @@ namespace hrcontact
     declare_parameters(dealii::ParameterHandler &prm);
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /** The contact pairs' surfaces, kept equally refined where they face
+     * each other on a locally refined mesh. */
+    MatchedContactRefinement<dim>
+    matched_contact_refinement() const;
 
     /** Build the mesh, refine, distort and rotate it as asked. */
     void

@@ -27,7 +27,7 @@ namespace hrcontact
     bool
     create_coarse(dealii::Triangulation<dim> &triangulation) const override;
     /** The grading map. */
-    std::function<dealii::Point<dim>(const dealii::Point<dim> &)>
+    typename MeshGenerator<dim>::VertexMap
     refined_vertex_map() const override;
     std::map<dealii::types::boundary_id, std::string>
     boundary_names() const override;

@@ -6,6 +6,8 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <hrcontact/geometry/mesh_generator.h>
+
 #include <functional>
 #include <map>
 #include <string>
@@ -41,9 +43,8 @@ namespace hrcontact
      * the box is in the final coordinates.
      */
     void
-    apply(dealii::Triangulation<dim> &triangulation,
-          const std::function<dealii::Point<dim>(const dealii::Point<dim> &)>
-            &place) const;
+    apply(dealii::Triangulation<dim>                   &triangulation,
+          const typename MeshGenerator<dim>::VertexMap &place) const;
 
     /**
      * Move every hanging vertex to the middle of its parent edge (face): Q1

@@ -35,17 +35,32 @@ namespace hrcontact
     /**
      * The coarse mesh with the manifolds its refinement needs, where the
      * grid can be built in three steps: create(t, r) places the same
-     * vertices as create_coarse(t), t.refine_global(r) and then moving
-     * every vertex x to refined_vertex_map()(x). Returns false (the default)
-     * when the grid cannot: MultiBodyGrid then joins refined bodies, which a
-     * distributed mesh takes as its coarse mesh on every process.
+     * vertices as create_coarse(t), t.refine_global(r) and then
+     * move_refined_vertices(t, refined_vertex_map()). Returns false (the
+     * default) when the grid cannot: a locally refined mesh then puts its
+     * new vertices on straight edges.
      */
     virtual bool
     create_coarse(dealii::Triangulation<dim> &triangulation) const;
 
-    /** Where a vertex of the refined coarse mesh goes (default: it stays). */
-    virtual std::function<dealii::Point<dim>(const dealii::Point<dim> &)>
+    /** Where a vertex x of a cell of body (material id) b goes. */
+    using VertexMap =
+      std::function<dealii::Point<dim>(const dealii::Point<dim>        &x,
+                                       const dealii::types::material_id b)>;
+
+    /**
+     * Where a vertex of the refined coarse mesh goes (default: it stays).
+     * The body matters where several bodies, each with its own map, share
+     * one mesh (MultiBodyGrid).
+     */
+    virtual VertexMap
     refined_vertex_map() const;
+
+    /** Move every vertex once by @p map, with the body of a cell holding it
+     * (bodies share no vertices). */
+    static void
+    move_refined_vertices(dealii::Triangulation<dim> &triangulation,
+                          const VertexMap            &map);
 
     /**
      * Why this grid may not be distorted or rotated afterwards (empty: it

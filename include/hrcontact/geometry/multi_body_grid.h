@@ -66,6 +66,18 @@ namespace hrcontact
     create(dealii::Triangulation<dim> &triangulation,
            const unsigned int          refinements) const override;
 
+    /**
+     * The bodies' coarse meshes placed and joined, their manifolds carried
+     * along; false where a body's grid has none or one of its manifolds
+     * cannot be moved.
+     */
+    bool
+    create_coarse(dealii::Triangulation<dim> &triangulation) const override;
+
+    /** Each body's own map, in its own frame: placed, mapped, placed back. */
+    typename MeshGenerator<dim>::VertexMap
+    refined_vertex_map() const override;
+
     unsigned int
     n_bodies() const;
 
@@ -81,8 +93,9 @@ namespace hrcontact
     placement_of(const unsigned int b) const;
 
     /**
-     * The distributed variant: false (nothing done) when a body's grid has
-     * no coarse mesh or one of its manifolds cannot be moved.
+     * The distributed variant: create_coarse, refined, vertices moved, and
+     * flat as the joined refined bodies; false (nothing done) where
+     * create_coarse cannot.
      */
     bool
     create_from_coarse_meshes(dealii::Triangulation<dim> &triangulation,
