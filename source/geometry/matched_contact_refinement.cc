@@ -14,8 +14,8 @@ namespace hrcontact
   namespace
   {
     /** A pair face in final coordinates: centre, unit normal, size, the
-     * level of its cell and its boundary id, packed as doubles for the
-     * gather. */
+     * level of its cell and its boundary id; packed as doubles for the
+     * gather without the normal, which only the face tested needs. */
     template <int dim>
     struct PairFace
     {
@@ -25,15 +25,13 @@ namespace hrcontact
       int                level = 0;
       types::boundary_id id    = 0;
 
-      static constexpr unsigned int n_packed = 2 * dim + 3;
+      static constexpr unsigned int n_packed = dim + 3;
 
       void
       pack(std::vector<double> &out) const
       {
         for (unsigned int d = 0; d < dim; ++d)
           out.push_back(centre[d]);
-        for (unsigned int d = 0; d < dim; ++d)
-          out.push_back(normal[d]);
         out.push_back(h);
         out.push_back(level);
         out.push_back(id);
@@ -45,11 +43,9 @@ namespace hrcontact
         PairFace f;
         for (unsigned int d = 0; d < dim; ++d)
           f.centre[d] = in[d];
-        for (unsigned int d = 0; d < dim; ++d)
-          f.normal[d] = in[dim + d];
-        f.h     = in[2 * dim];
-        f.level = int(in[2 * dim + 1]);
-        f.id    = types::boundary_id(in[2 * dim + 2]);
+        f.h     = in[dim];
+        f.level = int(in[dim + 1]);
+        f.id    = types::boundary_id(in[dim + 2]);
         return f;
       }
     };
