@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <hrcontact/adaptivity/adaptive_refinement.h>
+#include <hrcontact/adaptivity/contact_zone_refinement.h>
 #include <hrcontact/adaptivity/refinement_indicator.h>
 #include <hrcontact/core/input.h>
 
@@ -77,6 +78,7 @@ namespace hrcontact
                         "displacement dofs (0: no ceiling).");
     }
     prm.leave_subsection();
+    ContactZoneRefinement<dim>::declare_parameters(prm);
   }
 
   template <int dim>

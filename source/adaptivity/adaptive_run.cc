@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <hrcontact/adaptivity/adaptive_run.h>
+#include <hrcontact/adaptivity/contact_zone_refinement.h>
 #include <hrcontact/adaptivity/refinement_indicator.h>
 #include <hrcontact/core/hr_problem.h>
 
@@ -22,6 +23,8 @@ namespace hrcontact
   {
     AdaptiveRefinement<dim> refinement;
     refinement.parse_parameters(prm);
+    ContactZoneRefinement<dim> contact_zone;
+    contact_zone.parse_parameters(prm);
     const auto estimator =
       RefinementIndicatorFactory<dim>::create(refinement.estimator);
     // The previous cycle's problem lives on until the next has carried its
@@ -81,6 +84,11 @@ namespace hrcontact
         refinement.history.push_back(refinement.mark(r.triangulation(),
                                                      indicators,
                                                      r.partition.communicator));
+        if (const unsigned int added =
+              contact_zone.add_to(r, refinement.history.back()))
+          log << "    contact zone depth: " << added << " more"
+              << (added == 1 ? " cell" : " cells")
+              << " refined beneath the pressed zone" << std::endl;
         previous = std::move(current);
       }
   }
