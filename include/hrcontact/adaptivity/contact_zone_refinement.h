@@ -19,7 +19,7 @@ namespace hrcontact
    * body beneath it coarse, where the stresses are smooth and their energy
    * error small. But the peak pressure is set there, by the elastic field
    * over a depth of the zone's size: Hertz with kelly, 4 cycles, 20,714
-   * dofs: peak -0.12 % without, -0.04 % with depth 0.5, for 18 more cells
+   * dofs: peak -0.12 % without; -0.04 % with depth 0.5, at 20,898 dofs
    * (doc/adaptivity.md). One level below the finest, because the smooth
    * interior needs less than the edge's square root; the edge keeps the
    * estimator's finest cells.
