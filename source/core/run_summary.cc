@@ -102,7 +102,18 @@ namespace hrcontact
   {
     if (!r.scene.all_linear() || r.scene.stress_constraint)
       {
-        summary.add("material_newton_steps", r.material.newton_steps);
+        // All levels together, and (nested) each level's, coarsest first.
+        unsigned int steps = r.material.newton_steps;
+        std::string  per_level;
+        for (const auto &level : r.coarse_levels)
+          {
+            steps += level.material_steps;
+            per_level += std::to_string(level.material_steps) + " ";
+          }
+        summary.add("material_newton_steps", steps);
+        if (!r.coarse_levels.empty())
+          summary.add("material_newton_steps_per_level",
+                      per_level + std::to_string(r.material.newton_steps));
         summary.add("material_stress_change",
                     r.material.changes.empty() ? 0. :
                                                  r.material.changes.back());

@@ -33,6 +33,15 @@ namespace hrcontact
   }
 
   template <int dim>
+  bool
+  MaterialLoop<dim>::projects_constraint(const Scene<dim> &scene) const
+  {
+    return scene.stress_constraint &&
+           constraint_iteration.method ==
+             StressConstraintIteration::Method::closed_form_projection;
+  }
+
+  template <int dim>
   void
   MaterialLoop<dim>::run(EquilibriumSystem           &system,
                          NewtonStepPath              &path,
@@ -187,9 +196,12 @@ namespace hrcontact
     HRAssembler<dim> assembler(r.scene, r.spaces);
     assembler.cone = cone.get();
     // The state: the point strains of the last step (zero: the first step
-    // is the elastic solve).
+    // is the elastic solve; or a coarser level's answer, prolongated).
     FieldVector state, stress;
     reinit_field(state, r.spaces.stress_unknowns());
+    const FieldVector &start = r.stress_constraint.start_point_strains;
+    if (start.size() == state.size())
+      state.copy_locally_owned_data_from(start);
     state.update_ghost_values();
     double elastic_strain = 0, elastic_stress = 0, model_error = 0;
     // Converged when the model's stresses are the law's (the strains of
@@ -252,7 +264,7 @@ namespace hrcontact
       *r.scene.stress_constraint,
       r.spaces,
       StressConstraintField<dim>::Points::gauss_points);
-    FieldVector last;
+    FieldVector &last = r.stress_constraint.point_strains;
     operations.stresses(last);
     cone->store_fracture_strains(last, *constraint_field);
     r.stress_constraint.cracked_fraction = constraint_field->cracked_fraction();

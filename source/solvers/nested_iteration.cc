@@ -157,9 +157,11 @@ namespace hrcontact
       "the condensed path with the consistent augmented Lagrangian (the "
       "Macaulay one takes a number), from Minimum dofs up, as many levels as keep the coarsest "
       "at Coarsest level dofs or more; not for a nonlinear law or a stress "
-      "constraint (a coarse level would run the whole material iteration "
-      "to carry the contact state only). A number needs as many Global "
-      "refinements.");
+      "constraint under the augmented Lagrangian (a coarse level would run "
+      "the whole material iteration to carry the contact state only), but "
+      "for a stress constraint in closed-form projection, whose coarser "
+      "levels carry their point strains as well (doc/materials.md). A "
+      "number needs as many Global refinements.");
     prm.declare_entry("Minimum dofs",
                       "5000",
                       Patterns::Double(0),

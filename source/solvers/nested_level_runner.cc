@@ -67,6 +67,24 @@ namespace hrcontact
   }
 
   template <int dim>
+  bool
+  NestedLevelRunner<dim>::nests(const SolutionPath               path,
+                                const AugmentedLagrangianSolver &contact_solver,
+                                const Results<dim>              &r) const
+  {
+    // The closed-form projection's Newton iteration is carried by its
+    // point strains: the crack pattern of the coarser level is most of the
+    // finer one's (doc/materials.md, steps per level).
+    if (carries_point_strains)
+      return path == SolutionPath::condensed &&
+             (!r.has_contact ||
+              contact_solver.regularisation ==
+                AugmentedLagrangianSolver::Regularisation::consistent) &&
+             !r.scene.has_changing_rows();
+    return carries_state(path, contact_solver, r);
+  }
+
+  template <int dim>
   unsigned int
   NestedLevelRunner<dim>::levels_to_solve(
     const SolutionPath               path,
@@ -82,15 +100,18 @@ namespace hrcontact
     // run the whole material iteration to carry the contact state only,
     // which each material step's contact solve starts from anyway (the
     // no-tension pier at 128 x 768 cells: 760 s of coarse levels, the fine
-    // level's iteration the same; doc/materials.md).
-    const bool         applies = carries_state(path, contact_solver, r);
+    // level's iteration the same; doc/materials.md). The closed-form
+    // projection is the exception: its coarser levels carry the point
+    // strains, which save the finer level most of its steps (nests()).
+    const bool         applies = nests(path, contact_solver, r);
     const unsigned int levels  = settings.levels(scene.global_refinements,
                                                 r.system.n_displacement_dofs,
                                                 dim,
                                                 applies);
-    if (levels == 0 || !r.has_contact) // without contact nothing to carry
+    // Without contact or point strains nothing to carry.
+    if (levels == 0 || !(r.has_contact || carries_point_strains))
       return 0;
-    if (!contact_solver.carries_state())
+    if (r.has_contact && !contact_solver.carries_state())
       throw InputError(
         "Nested iteration/Coarse levels: the pure penalty and the "
         "displacement augmented Lagrangian have no multipliers to carry to "
@@ -169,8 +190,9 @@ namespace hrcontact
         level.updates      = c.contact->history.size();
         level.newton_steps = c.contact->total_newton_steps;
       }
-    level.linear_solves = c.solve.linear_statistics.solves;
-    level.converged     = solved;
+    level.linear_solves  = c.solve.linear_statistics.solves;
+    level.material_steps = c.material.newton_steps;
+    level.converged      = solved;
     // Its own time: the coarser levels it solved first report theirs.
     level.seconds = timer.wall_time();
     for (const auto &inner : r.coarse_levels)
@@ -186,7 +208,11 @@ namespace hrcontact
     log << "  nested iteration, level of " << level.global_refinements
         << " refinements: " << level.displacement_dofs << " dofs, "
         << level.updates << " updates, " << level.newton_steps
-        << " Newton steps, " << std::setprecision(3) << level.seconds << " s"
+        << " Newton steps, "
+        << (carries_point_strains ?
+              std::to_string(level.material_steps) + " material steps, " :
+              "")
+        << std::setprecision(3) << level.seconds << " s"
         << (solved ? "" :
                      " (did not converge; the next level starts from "
                      "the trial solution: " +
@@ -199,12 +225,22 @@ namespace hrcontact
     const double compliance_scale =
       r.scene.nodal_compliance(r.triangulation()) /
       c.scene.nodal_compliance(c.triangulation());
-    contact_solver.start_from(transfer_contact_state(c.system,
-                                                     *c.contact,
-                                                     r.system,
-                                                     std::pow(2., 1. - dim),
-                                                     compliance_scale,
-                                                     !finest_level));
+    if (c.contact)
+      contact_solver.start_from(transfer_contact_state(c.system,
+                                                       *c.contact,
+                                                       r.system,
+                                                       std::pow(2., 1. - dim),
+                                                       compliance_scale,
+                                                       !finest_level));
+    if (carries_point_strains)
+      {
+        FieldVector &start = r.stress_constraint.start_point_strains;
+        reinit_field(start, r.spaces.stress_unknowns());
+        prolongate_to_finer_mesh(c.spaces.stress_unknowns(),
+                                 c.stress_constraint.point_strains,
+                                 r.spaces.stress_unknowns(),
+                                 start);
+      }
     linear_solver.starts_from_coarser_level = true;
     start_displacements(c, path, linear_solver, r, coarse_start);
   }

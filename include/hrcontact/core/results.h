@@ -163,7 +163,7 @@ namespace hrcontact
     struct CoarseLevel
     {
       unsigned int global_refinements = 0, displacement_dofs = 0, updates = 0,
-                   newton_steps = 0, linear_solves = 0;
+                   newton_steps = 0, linear_solves = 0, material_steps = 0;
       bool converged = false;
       /** The level's own wall time, without the coarser levels before it
        * (so that the levels' seconds add up). */
@@ -193,6 +193,10 @@ namespace hrcontact
       double                            cracked_fraction        = 0;
       double                            largest_fracture_strain = 0;
       const StressConstraintField<dim> *field                   = nullptr;
+      /** The closed-form projection's converged point strains (in the
+       * stress unknowns' DGQ1 space), and the ones its iteration starts
+       * from (a coarser level's, prolongated; empty: the elastic step). */
+      FieldVector point_strains, start_point_strains;
     };
     StressConstraintState stress_constraint;
     /** Wall time of the run's sections so far (for summary.txt). */

@@ -39,6 +39,12 @@ namespace hrcontact
     static bool
     iterates(const Scene<dim> &scene);
 
+    /** Whether the scene's stress constraint is imposed in closed form at
+     * the Gauss points: its state, the point strains, is then carried from
+     * a coarser level (NestedLevelRunner). */
+    bool
+    projects_constraint(const Scene<dim> &scene) const;
+
     /** Run solve_once as above; the steps, changes and the constraint's
      * state go to results. */
     void

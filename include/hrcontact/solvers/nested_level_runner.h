@@ -80,8 +80,18 @@ namespace hrcontact
         std::ostream              &log) const;
 
     NestedIterationSettings settings;
+    /** The scene's stress constraint is imposed in closed form at the
+     * Gauss points (MaterialLoop::projects_constraint): its point strains
+     * are the state a coarser level carries, with or without contact. */
+    bool carries_point_strains = false;
 
   private:
+    /** Whether the coarser levels' states apply to this run at all: a
+     * contact state (carries_state) or the point strains. */
+    bool
+    nests(const SolutionPath               path,
+          const AugmentedLagrangianSolver &contact_solver,
+          const Results<dim>              &results) const;
     /** Whether a carried contact state applies to this run: the condensed
      * path, the consistent AL, fixed rows, linear laws and materials. */
     bool
