@@ -5,7 +5,8 @@
 // = 0, and the block spreads freely about that node, u_x = (x - 1) eps_xx
 // with eps_xx = nu (1 + nu) q / E. Holding u_x = 0 along the whole base
 // (the old way) must spoil it. And a point that is not a node of its
-// boundary is refused by name.
+// boundary, a wrong value count, an unknown component and a malformed entry
+// are refused by name.
 
 #include <hrcontact/postprocess/field_values.h>
 
@@ -88,8 +89,11 @@ main(int argc, char **argv)
                  "1 % of q: "
               << (stress > 1e-2 ? "yes" : "NO") << std::endl;
   }
-  for (const std::string entry :
-       {"2 (1.01, 0) x: 0", "2 (1, 0) x: 0; 0", "2 1, 0 x: 0", "2 (1) x: 0"})
+  for (const std::string entry : {"2 (1.01, 0) x: 0",
+                                  "2 (1, 0) x: 0; 0",
+                                  "2 (1, 0) w: 0",
+                                  "2 1, 0 x: 0",
+                                  "2 (1) x: 0"})
     try
       {
         solve_from_text<2>(

@@ -1,6 +1,7 @@
 #include <hrcontact/constraints/constraint_source.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace hrcontact
 {
@@ -13,6 +14,18 @@ namespace hrcontact
     return std::any_of(prescribed.begin(), prescribed.end(), [](bool b) {
       return b;
     });
+  }
+
+  template <int dim>
+  bool
+  NodeConstraints<dim>::prescribe(const unsigned int d, const double value)
+  {
+    if (prescribed[d] &&
+        std::abs(prescribed_value[d] - value) > 1e-10 * (1 + std::abs(value)))
+      return false;
+    prescribed[d]       = true;
+    prescribed_value[d] = value;
+    return true;
   }
 
   template <int dim>

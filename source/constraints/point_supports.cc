@@ -1,3 +1,4 @@
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/utilities.h>
 
 #include <hrcontact/constraints/point_supports.h>
@@ -75,24 +76,19 @@ namespace hrcontact
       {
         if (item.empty())
           continue;
+        // 'id (point) [components]: values': the point cut out, the rest
+        // is a per-boundary entry like Prescribed displacements'.
         const auto open = item.find('('), close = item.find(')');
-        const auto colon =
-          item.find(':', close == std::string::npos ? 0 : close);
         if (open == std::string::npos || close == std::string::npos ||
-            close < open || colon == std::string::npos)
+            close < open)
           throw InputError(where + ": '" + item +
                            "' is not 'id (point) [components]: values'.");
-        types::boundary_id id;
-        try
-          {
-            id =
-              Utilities::string_to_int(Utilities::trim(item.substr(0, open)));
-          }
-        catch (...)
-          {
-            throw InputError(where + ": '" + item.substr(0, open) +
-                             "' is not a boundary id.");
-          }
+        const BoundaryEntry e =
+          parse_boundary_list(item.substr(0, open) + item.substr(close + 1),
+                              dim,
+                              true,
+                              where)
+            .front();
         Support    s;
         const auto coordinates =
           split_and_trim(item.substr(open + 1, close - open - 1), ',');
@@ -102,31 +98,14 @@ namespace hrcontact
         for (unsigned int d = 0; d < dim; ++d)
           s.point[d] =
             evaluate_constant_expression(coordinates[d], constants, where);
-        const std::string letters =
-          Utilities::trim(item.substr(close + 1, colon - close - 1));
-        for (const char c : letters)
-          {
-            const auto d = std::string("xyz").substr(0, dim).find(c);
-            if (c == ' ')
-              continue;
-            if (d == std::string::npos)
-              throw InputError(where + ": '" + std::string(1, c) + "' in '" +
-                               item + "' is not a component (x, y" +
-                               (dim == 3 ? ", z" : "") + ").");
-            s.components.push_back(d);
-          }
-        if (s.components.empty())
-          for (unsigned int d = 0; d < dim; ++d)
-            s.components.push_back(d);
-        const auto values = split_and_trim(item.substr(colon + 1), ';');
-        if (values.size() != s.components.size())
-          throw InputError(where + ": '" + item + "' names " +
-                           std::to_string(s.components.size()) +
-                           " component(s) but gives " +
-                           std::to_string(values.size()) + " value(s).");
-        for (const std::string &v : values)
-          s.values.push_back(evaluate_constant_expression(v, constants, where));
-        supports.emplace(id, s);
+        s.components        = e.components;
+        const auto function = make_function<dim>(e.expressions,
+                                                 e.components.size(),
+                                                 constants,
+                                                 where);
+        for (unsigned int k = 0; k < e.components.size(); ++k)
+          s.values.push_back(function->value(s.point, k));
+        supports.emplace(e.boundary_id, s);
       }
     return !supports.empty();
   }
@@ -182,19 +161,11 @@ namespace hrcontact
             NodeConstraints<dim> &c = nodes[face.nodes[v]];
             const Support        &s = it->second;
             for (unsigned int k = 0; k < s.components.size(); ++k)
-              {
-                const unsigned int d = s.components[k];
-                if (c.prescribed[d] &&
-                    std::abs(c.prescribed_value[d] - s.values[k]) >
-                      1e-10 * (1 + std::abs(s.values[k])))
-                  throw InputError(
-                    "Supports/Point supports: component " +
-                    std::string(1, "xyz"[d]) + " at " +
-                    system.describe_node(face.nodes[v]) +
-                    " is already prescribed with another value.");
-                c.prescribed[d]       = true;
-                c.prescribed_value[d] = s.values[k];
-              }
+              if (!c.prescribe(s.components[k], s.values[k]))
+                throw InputError("Supports/Point supports: component " +
+                                 std::string(1, "xyz"[s.components[k]]) +
+                                 " at " + system.describe_node(face.nodes[v]) +
+                                 " is already prescribed with another value.");
           }
   }
 

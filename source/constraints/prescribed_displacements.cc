@@ -102,15 +102,12 @@ namespace hrcontact
                 "boundary " +
                 std::to_string(face.boundary_id) + " is not finite at " +
                 system.describe_node(node) + ".");
-            if (c.prescribed[d] && std::abs(c.prescribed_value[d] - value) >
-                                     1e-10 * (1 + std::abs(value)))
+            if (!c.prescribe(d, value))
               throw InputError(
                 "Supports/Prescribed displacements: two boundaries "
                 "prescribe different values of component " +
                 std::string(1, "xyz"[d]) + " at " + system.describe_node(node) +
                 ".");
-            c.prescribed[d]       = true;
-            c.prescribed_value[d] = value;
           }
       }
   }

@@ -65,6 +65,11 @@ namespace hrcontact
     /** Whether some component is prescribed. */
     bool
     any_prescribed() const;
+
+    /** Prescribe component @p d to @p value; false (and nothing changed)
+     * when another kind already prescribed it to a different value. */
+    bool
+    prescribe(const unsigned int d, const double value);
     /** Record an obstacle (once per boundary id). */
     void
     touch(const dealii::types::boundary_id id,
