@@ -239,7 +239,7 @@ namespace hrcontact
       results_.wall_time += seconds;
     std::filesystem::create_directories(output.directory);
     PostprocessOutput out{
-      results_.summary, log, output.directory, mpi_communicator, {}};
+      results_.summary, log, output.directory, mpi_communicator, {}, {}};
     postprocessors.execute(results_, out);
     if (is_root_process(mpi_communicator))
       results_.summary.write(output.directory + "/summary.txt");

@@ -152,6 +152,7 @@ namespace hrcontact
     std::string
     write_solution(
       const Results<dim>                               &results,
+      const std::map<std::string, Vector<float>>       &cell_fields,
       const std::string                                &directory,
       const DataOutBase::VtkFlags::ZlibCompressionLevel compression)
     {
@@ -215,6 +216,9 @@ namespace hrcontact
         }
       if (contact_fields)
         contact_fields->add_to(data_out);
+      // What earlier postprocessors computed per cell (the error bound).
+      for (const auto &[name, field] : cell_fields)
+        data_out.add_data_vector(field, name);
       data_out.build_patches();
       DataOutBase::VtkFlags vtk_flags;
       vtk_flags.compression_level = compression;
@@ -256,8 +260,8 @@ namespace hrcontact
   SolutionOutput<dim>::execute(const Results<dim> &results,
                                PostprocessOutput  &output)
   {
-    output.mentioned_files.push_back(
-      write_solution(results, output.directory, compression));
+    output.mentioned_files.push_back(write_solution(
+      results, output.cell_fields, output.directory, compression));
   }
 
   template class SolutionOutput<2>;

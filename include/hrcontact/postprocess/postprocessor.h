@@ -3,11 +3,14 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <deal.II/lac/vector.h>
+
 #include <hrcontact/core/input.h>
 #include <hrcontact/core/results.h>
 #include <hrcontact/postprocess/summary.h>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -26,6 +29,12 @@ namespace hrcontact
     MPI_Comm communicator;
     /** Files to name in the run's last line beside summary.txt. */
     std::vector<std::string> mentioned_files;
+    /**
+     * Cell fields (one value per active cell) a postprocessor computed for
+     * solution.vtu, by name: those that run before "solution" publish them
+     * here (the error bound's indicators).
+     */
+    std::map<std::string, dealii::Vector<float>> cell_fields;
   };
 
   /**

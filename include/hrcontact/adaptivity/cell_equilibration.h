@@ -1,0 +1,84 @@
+#ifndef hrcontact_cell_equilibration_h
+#define hrcontact_cell_equilibration_h
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <hrcontact/adaptivity/face_tractions.h>
+#include <hrcontact/adaptivity/triangle_split.h>
+
+#include <map>
+#include <vector>
+
+namespace hrcontact
+{
+  /**
+   * Step 2 of EquilibratedStress: on each cell, split at its centre into
+   * four triangles, the symmetric stress, polynomial of `degree` on each,
+   * with div tau + f = 0 on each triangle (against the polynomials of degree
+   * p - 1), tau n equal to the FaceTractions on the cell's faces and
+   * continuous across the inner edges (against the polynomials of degree p
+   * on each edge), that minimises the cell's share of the bound |tau - C
+   * eps(u_h)|_{C^-1}. The split is why one exists: at a corner two faces
+   * meet whose tractions one symmetric polynomial could not match there.
+   * The constraints and the energy depend on the cell's shape only: their
+   * factors (SVD of the constraints, null space, reduced Hessian) are kept
+   * per shape and body and reused by every translated copy.
+   */
+  class CellEquilibration
+  {
+  public:
+    /** Degree 3 gives the same bounds to 1 % at twice the cost. */
+    static constexpr unsigned int degree = 2;
+
+    CellEquilibration(const Results<2> &results, const FaceTractions &faces);
+
+    /** One cell: @p x the coefficients; this cell's eta_K^2 and
+     * |sigma_h|^2_{C^-1, K}. */
+    void
+    solve(const dealii::DoFHandler<2>::active_cell_iterator &cell,
+          dealii::Vector<double>                            &x,
+          double                                            &bound_squared,
+          double                                            &energy_squared);
+
+    const TrianglePolynomials polynomials;
+    /** The largest residual of the constraints, relative to max |sigma_h|
+     * h_K. */
+    double residual = 0;
+
+  private:
+    struct Factors
+    {
+      dealii::FullMatrix<double> A;
+      /** x = M_c c + M_g g: M_g = N (N^T H N)^{-1} N^T, M_c = A^+ - M_g H
+       * A^+, with N the null space of A and H the energy's Hessian. */
+      dealii::FullMatrix<double> M_c, M_g;
+    };
+    const Factors &
+    factors(const TriangleSplit                 &split,
+            const dealii::types::material_id     body,
+            const std::vector<dealii::Point<2>> &points,
+            const std::vector<double>           &weights);
+    void
+    constraint_matrix(const TriangleSplit                 &split,
+                      const std::vector<dealii::Point<2>> &points,
+                      const std::vector<double>           &weights,
+                      dealii::FullMatrix<double>          &A) const;
+    void
+    constraint_data(const dealii::DoFHandler<2>::active_cell_iterator &cell,
+                    const TriangleSplit                               &split,
+                    const std::vector<dealii::Point<2>>               &points,
+                    const std::vector<double>                         &weights,
+                    dealii::Vector<double>                            &c) const;
+
+    const Results<2>                         &results;
+    const FaceTractions                      &faces;
+    const TrianglePolynomials                 lower;
+    CellSampler                               sampler;
+    std::map<std::vector<long long>, Factors> cache;
+    double                                    sigma_max = 0;
+    unsigned int                              n_rows    = 0;
+  };
+} // namespace hrcontact
+
+#endif

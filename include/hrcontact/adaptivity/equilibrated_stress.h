@@ -1,0 +1,105 @@
+#ifndef hrcontact_equilibrated_stress_h
+#define hrcontact_equilibrated_stress_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <hrcontact/core/results.h>
+
+#include <array>
+#include <vector>
+
+namespace hrcontact
+{
+  /**
+   * A statically admissible stress tau reconstructed from the HR stresses:
+   * symmetric, div tau + f = 0 and tau n continuous across every face
+   * exactly (to round-off), tau n = t on the loaded boundary. With the
+   * displacement u_h (conforming Q1, the supports held) it gives the
+   * Prager-Synge (hypercircle) identity
+   *
+   *   |u - u_h|_E^2 + |sigma - tau|_{C^-1}^2 = |tau - C eps(u_h)|_{C^-1}^2,
+   *
+   * so that eta = |tau - C eps(u_h)|_{C^-1} bounds the energy error of u_h
+   * with no constant (doc/error-bounds.md). We write this construction
+   * ourselves: deal.II has no symmetric equilibrated stress element.
+   *
+   * Two local steps (Ladevèze's element equilibration): FaceTractions
+   * balance every cell, then CellEquilibration finds in each cell a
+   * symmetric piecewise-polynomial stress with those tractions.
+   *
+   * Exact for body forces of degree < CellEquilibration::degree and
+   * tractions of degree <= CellEquilibration::degree on each face; other
+   * data are projected. So far: 2D, one process, conforming meshes, linear
+   * elastic bodies, supports by prescribed displacements and point supports
+   * (no contact rows); other scenes are refused by name.
+   */
+  template <int dim>
+  class EquilibratedStress
+  {
+  public:
+    /** Refuses (InputError) what the construction does not cover. */
+    explicit EquilibratedStress(const Results<dim> &results);
+
+    /** Both steps. */
+    void
+    compute();
+
+    /** |tau - C eps(u_h)|^2_{C^-1} per active cell: eta^2 is their sum. */
+    const std::vector<double> &
+    cell_bound_squared() const
+    {
+      return bound_squared;
+    }
+
+    /** eta. */
+    double
+    bound() const;
+
+    /** |sigma_h|^2_{C^-1}: the energy of the computed stresses. */
+    double
+    solution_energy_squared() const
+    {
+      return solution_energy;
+    }
+
+    /**
+     * How exactly tau is admissible: the largest residual of the vertex
+     * problems (force, relative to the largest cell residual of the HR
+     * stresses) and of the cells' constraints (equilibrium, face tractions,
+     * inner continuity; relative to the largest traction integral).
+     */
+    double traction_residual = 0, cell_residual = 0;
+
+    /** The energy norms against an exact stress field sigma. */
+    struct Comparison
+    {
+      /** |u - u_h|_E^2 = |sigma - C eps(u_h)|^2_{C^-1}. */
+      double displacement_error_squared = 0;
+      /** |sigma - tau|^2_{C^-1}. */
+      double reconstruction_error_squared = 0;
+      /** |sigma - sigma_h|^2_{C^-1}. */
+      double stress_error_squared = 0;
+      /** |sigma|^2_{C^-1}. */
+      double reference_energy_squared = 0;
+    };
+    Comparison
+    compare(const dealii::Function<dim> &reference) const;
+
+    /** tau at a point of cell @p cell (active index). */
+    dealii::SymmetricTensor<2, dim>
+    value(const unsigned int cell, const dealii::Point<dim> &point) const;
+
+  private:
+    const Results<dim> &results;
+    /** The polynomial coefficients of each cell's four triangles. */
+    std::vector<dealii::Vector<double>> coefficients;
+    std::vector<double>                 bound_squared;
+    double                              solution_energy = 0;
+  };
+} // namespace hrcontact
+
+#endif

@@ -1,0 +1,95 @@
+#ifndef hrcontact_face_tractions_h
+#define hrcontact_face_tractions_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <hrcontact/core/results.h>
+
+#include <array>
+#include <vector>
+
+namespace hrcontact
+{
+  /** The one displacement dof of an unrotated row (a single coefficient
+   * +-1), or -1. */
+  long long
+  single_dof(const EquilibriumRow &row);
+
+  /**
+   * Linear face tractions that balance every cell of a 2D conforming mesh
+   * (Ladevèze's element equilibration, step 1 of EquilibratedStress). The
+   * HR stresses satisfy equilibrium against every Q1 test function that is
+   * not held (eq. 38's free rows), so around each vertex v the cells'
+   * residuals R_K = int_K sigma_h : eps(phi_v e_c) - f_c phi_v (less their
+   * loaded faces' data moments) sum to zero; per vertex and component the
+   * unknown moments b_F = int_F t phi_v solve A b = R (A: +1 on the face's
+   * owner, -1 on its other side), the one closest to the averaged sigma_h n
+   * (b = b0 + A^+ (R - A b0)). The hat functions sum to one and reproduce
+   * linear fields, so each cell's tractions balance its body force in force
+   * and moment.
+   */
+  class FaceTractions
+  {
+  public:
+    /** One face (a line of the mesh, by index): the traction of its owner
+     * side at its two vertices, by component; `known`: a loaded boundary
+     * face whose traction is the data. */
+    struct Face
+    {
+      unsigned int                         owner = 0;
+      std::array<unsigned int, 2>          vertices{};
+      std::array<std::array<double, 2>, 2> moment{}, value{};
+      std::array<bool, 2>                  known{};
+      bool                                 boundary    = false;
+      dealii::types::boundary_id           boundary_id = 0;
+    };
+
+    /** Computes the tractions of @p results (2D, serial, conforming). */
+    explicit FaceTractions(const Results<2> &results);
+
+    /** The traction the cell @p cell sees at @p x of its face @p face
+     * (outward normal @p normal): the data on a loaded face, else the
+     * linear traction (sign flipped on the side that does not own it). */
+    dealii::Tensor<1, 2>
+    traction(const unsigned int          face,
+             const unsigned int          cell,
+             const dealii::Point<2>     &x,
+             const dealii::Tensor<1, 2> &normal) const;
+
+    /** The data traction of boundary @p id at @p x (Loads/Tractions and
+     * Projected pressures). */
+    dealii::Tensor<1, 2>
+    data_traction(const dealii::types::boundary_id id,
+                  const dealii::Point<2>          &x,
+                  const dealii::Tensor<1, 2>      &normal) const;
+
+    /** The largest residual of the vertex problems, relative to the
+     * largest cell residual R_K: round-off when the HR equations hold. */
+    double residual = 0;
+
+  private:
+    const Results<2> &results;
+    std::vector<Face> faces;
+    /** R_K per cell, vertex and component; the averaged moments per face,
+     * face vertex and component. */
+    std::vector<std::array<std::array<double, 2>, 4>> cell_residual;
+    std::vector<std::array<std::array<double, 2>, 2>> average;
+    double                                            scale = 0;
+
+    void
+    classify_faces();
+    void
+    cell_residuals();
+    void
+    face_moments(const dealii::DoFHandler<2>::active_cell_iterator &cell,
+                 dealii::FEFaceValues<2>                           &hat_values,
+                 dealii::FEFaceValues<2> &stress_values);
+    void
+    solve_vertex_problems();
+  };
+} // namespace hrcontact
+
+#endif

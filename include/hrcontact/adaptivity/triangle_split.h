@@ -1,0 +1,138 @@
+#ifndef hrcontact_triangle_split_h
+#define hrcontact_triangle_split_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <hrcontact/core/results.h>
+
+#include <array>
+#include <map>
+#include <vector>
+
+namespace hrcontact
+{
+  /** The compliance of a 2D law on the stress components (xx, yy, xy):
+   * tau : C^-1 tau = t^T S t. */
+  dealii::FullMatrix<double>
+  component_compliance(const MaterialLaw<2> &law);
+
+  /**
+   * A 2D cell split at its centre into four triangles, on which the
+   * equilibrated stress is a polynomial per triangle (EquilibratedStress):
+   * the corners counter-clockwise (the fifth repeats the first), the centre,
+   * the length that scales the local coordinates, and a rule on the
+   * triangles.
+   */
+  struct TriangleSplit
+  {
+    explicit TriangleSplit(
+      const dealii::Triangulation<2>::active_cell_iterator &cell);
+
+    std::array<dealii::Point<2>, 5> P;
+    dealii::Point<2>                centre;
+    double                          h = 1;
+
+    /** Whether the opposite sides are parallel (the Q1 map affine). */
+    bool
+    parallelogram() const;
+
+    /** The triangle holding @p x. */
+    unsigned int
+    triangle(const dealii::Point<2> &x) const;
+
+    /** Duffy's collapse of an n x n Gauss rule on each triangle (exact to
+     * degree 2n - 2); triangle k's points start at k n^2. */
+    void
+    rule(const unsigned int             n,
+         std::vector<dealii::Point<2>> &points,
+         std::vector<double>           &weights) const;
+  };
+
+  /**
+   * Symmetric polynomial stresses on the four triangles: per triangle and
+   * component (xx, yy, xy) the monomials xi^a eta^b, a + b <= p, of the
+   * local coordinates xi = (x - centre) / h.
+   */
+  struct TrianglePolynomials
+  {
+    explicit TrianglePolynomials(const unsigned int degree);
+
+    unsigned int                             degree;
+    std::vector<std::array<unsigned int, 2>> monomials;
+
+    /** The unknown of triangle k, component c, monomial m. */
+    unsigned int
+    index(const unsigned int k,
+          const unsigned int c,
+          const unsigned int m) const
+    {
+      return (k * 3 + c) * monomials.size() + m;
+    }
+    unsigned int
+    n_unknowns() const
+    {
+      return 12 * monomials.size();
+    }
+    double
+    value(const TriangleSplit    &split,
+          const dealii::Point<2> &x,
+          const unsigned int      m) const;
+    dealii::Tensor<1, 2>
+    gradient(const TriangleSplit    &split,
+             const dealii::Point<2> &x,
+             const unsigned int      m) const;
+    /** The stress of coefficients @p x on triangle @p k at @p point. */
+    dealii::SymmetricTensor<2, 2>
+    stress(const dealii::Vector<double> &x,
+           const TriangleSplit          &split,
+           const unsigned int            k,
+           const dealii::Point<2>       &point) const;
+  };
+
+  /**
+   * eps(u_h) and sigma_h at real points of a cell. On a parallelogram the
+   * affine map takes a rule on the triangles to the same unit points on
+   * every cell, so the shape functions there are tabulated once per rule;
+   * other cells find their unit points by the Q1 mapping's Newton
+   * iteration. (FEValues, set up per cell for its own points, would cost
+   * more than the rest of the bound.)
+   */
+  class CellSampler
+  {
+  public:
+    explicit CellSampler(const Results<2> &results);
+
+    void
+    operator()(const dealii::DoFHandler<2>::active_cell_iterator &cell,
+               const std::vector<dealii::Point<2>>               &points,
+               const bool                                         parallelogram,
+               std::vector<dealii::SymmetricTensor<2, 2>>        &eps,
+               std::vector<dealii::SymmetricTensor<2, 2>>        &sigma);
+
+  private:
+    struct Table
+    {
+      std::vector<dealii::Point<2>>                  unit;
+      std::vector<std::vector<dealii::Tensor<1, 2>>> u_grad, hat_grad;
+      std::vector<std::vector<double>>               s_value;
+    };
+    void
+    tabulate(Table &t) const;
+
+    const Results<2>                            &results;
+    const dealii::FiniteElement<2>              &fe_u, &fe_s;
+    std::vector<dealii::types::global_dof_index> u_dofs, s_dofs;
+    std::vector<unsigned int>                    u_component;
+    std::vector<dealii::SymmetricTensor<2, 2>>   s_tensor;
+    std::map<unsigned int, Table>                tables;
+    Table                                        own;
+  };
+} // namespace hrcontact
+
+#endif

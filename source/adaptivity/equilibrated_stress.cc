@@ -1,0 +1,161 @@
+#include <hrcontact/adaptivity/cell_equilibration.h>
+#include <hrcontact/adaptivity/equilibrated_stress.h>
+#include <hrcontact/adaptivity/face_tractions.h>
+#include <hrcontact/adaptivity/triangle_split.h>
+#include <hrcontact/core/input.h>
+#include <hrcontact/postprocess/field_values.h>
+
+#include <cmath>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  template <int dim>
+  EquilibratedStress<dim>::EquilibratedStress(const Results<dim> &results)
+    : results(results)
+  {
+    const std::string what = "Postprocess/Error bound";
+    if (dim != 2)
+      throw InputError(what + " is computed in 2D only so far.");
+    if (results.partition.distributed())
+      throw InputError(what + " is computed on one process only so far.");
+    if (results.has_contact)
+      throw InputError(what + " does not cover contact yet (its tractions "
+                              "on the contact faces are not built).");
+    if (!results.scene.all_linear() || results.scene.stress_constraint)
+      throw InputError(what + " needs linear elastic bodies so far (no "
+                              "Admissible stresses, no nonlinear law).");
+    if (results.scene.refined_locally())
+      throw InputError(what + " needs a conforming mesh so far (no hanging "
+                              "nodes: no local or adaptive refinement).");
+    for (const auto &row : results.system.rows)
+      if (row.row_class != RowClass::free &&
+          (row.row_class != RowClass::prescribed || single_dof(row) < 0))
+        throw InputError(what + " covers prescribed displacement components "
+                                "only (no normal or rotated constraints).");
+  }
+
+  template <int dim>
+  double
+  EquilibratedStress<dim>::bound() const
+  {
+    double s = 0;
+    for (const double b : bound_squared)
+      s += b;
+    return std::sqrt(s);
+  }
+
+  template <int dim>
+  void
+  EquilibratedStress<dim>::compute()
+  {
+    if constexpr (dim == 2)
+      {
+        const FaceTractions faces(results);
+        CellEquilibration   cells(results, faces);
+        traction_residual = faces.residual;
+        coefficients.assign(results.triangulation().n_active_cells(),
+                            Vector<double>());
+        bound_squared.assign(coefficients.size(), 0.);
+        solution_energy = 0;
+        for (const auto &cell :
+             results.spaces.dof_handler_displacement.active_cell_iterators())
+          {
+            double energy = 0;
+            cells.solve(cell,
+                        coefficients[cell->active_cell_index()],
+                        bound_squared[cell->active_cell_index()],
+                        energy);
+            solution_energy += energy;
+          }
+        cell_residual = cells.residual;
+      }
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  EquilibratedStress<dim>::value(const unsigned int cell,
+                                 const Point<dim>  &point) const
+  {
+    SymmetricTensor<2, dim> tau;
+    if constexpr (dim == 2)
+      {
+        const TrianglePolynomials polynomials(CellEquilibration::degree);
+        for (const auto &c : results.triangulation().active_cell_iterators())
+          if (c->active_cell_index() == cell)
+            {
+              const TriangleSplit split(c);
+              tau = polynomials.stress(coefficients[cell],
+                                       split,
+                                       split.triangle(point),
+                                       point);
+            }
+      }
+    return tau;
+  }
+
+  template <int dim>
+  typename EquilibratedStress<dim>::Comparison
+  EquilibratedStress<dim>::compare(const Function<dim> &reference) const
+  {
+    Comparison result;
+    if constexpr (dim == 2)
+      {
+        const TrianglePolynomials polynomials(CellEquilibration::degree);
+        CellSampler               sampler(results);
+        Vector<double>            ref(MixedSpaces<dim>::n_stress_components);
+        for (const auto &cell :
+             results.spaces.dof_handler_displacement.active_cell_iterators())
+          {
+            const TriangleSplit split(cell);
+            // More points than the bound's rule: the reference field is not
+            // a polynomial.
+            const unsigned int    n_tri = split.parallelogram() ? 6 : 10;
+            std::vector<Point<2>> points;
+            std::vector<double>   weights;
+            split.rule(n_tri, points, weights);
+            std::vector<SymmetricTensor<2, dim>> eps, sigma_h;
+            sampler(cell, points, split.parallelogram(), eps, sigma_h);
+            const auto &law = results.scene.material_of(cell->material_id());
+            // C eps(u_h): the law gives C^-1; invert it on the components.
+            FullMatrix<double> C(3, 3);
+            C.invert(component_compliance(law));
+            const auto elastic_stress = [&](const SymmetricTensor<2, 2> &e) {
+              const double          ev[3] = {e[0][0], e[1][1], 2 * e[0][1]};
+              SymmetricTensor<2, 2> s;
+              for (unsigned int b = 0; b < 3; ++b)
+                {
+                  s[0][0] += C(0, b) * ev[b];
+                  s[1][1] += C(1, b) * ev[b];
+                  s[0][1] += C(2, b) * ev[b];
+                }
+              return s;
+            };
+            const auto energy = [&](const SymmetricTensor<2, dim> &s) {
+              return s * law.strain(s, Point<dim>());
+            };
+            for (unsigned int q = 0; q < points.size(); ++q)
+              {
+                reference.vector_value(points[q], ref);
+                const auto sigma = stress_tensor<dim>(ref);
+                const auto tau =
+                  polynomials.stress(coefficients[cell->active_cell_index()],
+                                     split,
+                                     q / (n_tri * n_tri),
+                                     points[q]);
+                const auto   Ceps = elastic_stress(eps[q]);
+                const double w    = weights[q];
+                result.displacement_error_squared += w * energy(sigma - Ceps);
+                result.reconstruction_error_squared += w * energy(sigma - tau);
+                result.stress_error_squared += w * energy(sigma - sigma_h[q]);
+                result.reference_energy_squared += w * energy(sigma);
+              }
+          }
+      }
+    return result;
+  }
+
+  template class EquilibratedStress<2>;
+  template class EquilibratedStress<3>;
+} // namespace hrcontact

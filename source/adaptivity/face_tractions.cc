@@ -1,0 +1,352 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <deal.II/grid/grid_tools.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <hrcontact/adaptivity/face_tractions.h>
+#include <hrcontact/postprocess/field_values.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  long long
+  single_dof(const EquilibriumRow &row)
+  {
+    long long dof = -1;
+    for (const auto &[d, c] : row.combination)
+      if (c != 0)
+        {
+          if (dof >= 0 || std::abs(std::abs(c) - 1) > 1e-14)
+            return -1;
+          dof = d;
+        }
+    return dof;
+  }
+
+  FaceTractions::FaceTractions(const Results<2> &results)
+    : results(results)
+  {
+    classify_faces();
+    cell_residuals();
+    solve_vertex_problems();
+    // Moments to the linear traction's vertex values (the face's mass
+    // matrix |F| / 6 [2 1; 1 2]).
+    const auto &vertices = results.triangulation().get_vertices();
+    for (Face &f : faces)
+      if (f.vertices[0] != f.vertices[1])
+        {
+          const double L =
+            (vertices[f.vertices[1]] - vertices[f.vertices[0]]).norm();
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              f.value[0][c] = 2. / L * (2 * f.moment[0][c] - f.moment[1][c]);
+              f.value[1][c] = 2. / L * (2 * f.moment[1][c] - f.moment[0][c]);
+            }
+        }
+  }
+
+  void
+  FaceTractions::classify_faces()
+  {
+    // A boundary face is held in component c when both its nodes are
+    // (Prescribed displacements); a point support holds no face.
+    std::set<types::global_dof_index> prescribed;
+    for (const auto &row : results.system.rows)
+      if (row.row_class == RowClass::prescribed)
+        prescribed.insert(single_dof(row));
+    const auto &tria = results.triangulation();
+    faces.assign(tria.n_raw_lines(), Face());
+    std::vector<bool> seen(tria.n_raw_lines(), false);
+    for (const auto &cell :
+         results.spaces.dof_handler_displacement.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        {
+          const unsigned int id = cell->face(f)->index();
+          if (seen[id])
+            continue;
+          seen[id]      = true;
+          Face &face    = faces[id];
+          face.owner    = cell->active_cell_index();
+          face.vertices = {
+            {cell->face(f)->vertex_index(0), cell->face(f)->vertex_index(1)}};
+          face.boundary    = cell->face(f)->at_boundary();
+          face.boundary_id = cell->face(f)->boundary_id();
+          for (unsigned int c = 0; c < 2; ++c)
+            face.known[c] =
+              face.boundary &&
+              !(prescribed.count(cell->face(f)->vertex_dof_index(0, c)) &&
+                prescribed.count(cell->face(f)->vertex_dof_index(1, c)));
+        }
+  }
+
+  Tensor<1, 2>
+  FaceTractions::data_traction(const types::boundary_id id,
+                               const Point<2>          &x,
+                               const Tensor<1, 2>      &normal) const
+  {
+    const Scene<2> &scene = results.scene;
+    Tensor<1, 2>    t;
+    Vector<double>  v(2);
+    if (const auto it = scene.tractions.find(id); it != scene.tractions.end())
+      {
+        it->second->vector_value(x, v);
+        for (unsigned int d = 0; d < 2; ++d)
+          t[d] += v[d];
+      }
+    if (const auto it = scene.projected_pressures.find(id);
+        it != scene.projected_pressures.end())
+      {
+        it->second->vector_value(x, v);
+        for (unsigned int d = 0; d < 2; ++d)
+          t[d] -= v[d] * normal[d];
+      }
+    return t;
+  }
+
+  Tensor<1, 2>
+  FaceTractions::traction(const unsigned int  face,
+                          const unsigned int  cell,
+                          const Point<2>     &x,
+                          const Tensor<1, 2> &normal) const
+  {
+    const Face  &f      = faces[face];
+    const auto  &v      = results.triangulation().get_vertices();
+    const double sign   = (f.owner == cell) ? 1. : -1.;
+    const double lambda = (x - v[f.vertices[0]]) *
+                          (v[f.vertices[1]] - v[f.vertices[0]]) /
+                          (v[f.vertices[1]] - v[f.vertices[0]]).norm_square();
+    Tensor<1, 2> data;
+    if (f.known[0] || f.known[1])
+      data = data_traction(f.boundary_id, x, normal);
+    Tensor<1, 2> t;
+    for (unsigned int i = 0; i < 2; ++i)
+      t[i] = f.known[i] ?
+               data[i] :
+               sign * ((1 - lambda) * f.value[0][i] + lambda * f.value[1][i]);
+    return t;
+  }
+
+  void
+  FaceTractions::cell_residuals()
+  {
+    const Scene<2>             &scene = results.scene;
+    const FE_Q<2>               hat(1);
+    const QGauss<2>             q_cell(4);
+    FEValues<2>                 hv(StaticMappingQ1<2>::mapping,
+                   hat,
+                   q_cell,
+                   update_values | update_gradients | update_quadrature_points |
+                     update_JxW_values);
+    FEValues<2>                 sv(StaticMappingQ1<2>::mapping,
+                   *results.spaces.fe_stress,
+                   q_cell,
+                   update_values);
+    const QGauss<1>             q_face(6);
+    FEFaceValues<2>             hfv(StaticMappingQ1<2>::mapping,
+                        hat,
+                        q_face,
+                        update_values | update_quadrature_points |
+                          update_normal_vectors | update_JxW_values);
+    FEFaceValues<2>             sfv(StaticMappingQ1<2>::mapping,
+                        *results.spaces.fe_stress,
+                        q_face,
+                        update_values);
+    std::vector<Vector<double>> s_values(
+      q_cell.size(), Vector<double>(MixedSpaces<2>::n_stress_components));
+    cell_residual.assign(results.triangulation().n_active_cells(), {});
+    average.assign(faces.size(), {});
+    Vector<double> f(2);
+    for (const auto &cell :
+         results.spaces.dof_handler_stress.active_cell_iterators())
+      {
+        hv.reinit(Triangulation<2>::active_cell_iterator(cell));
+        sv.reinit(cell);
+        sv.get_function_values(results.stress, s_values);
+        auto &R = cell_residual[cell->active_cell_index()];
+        for (unsigned int q = 0; q < q_cell.size(); ++q)
+          {
+            const auto sigma = stress_tensor<2>(s_values[q]);
+            f                = 0;
+            if (scene.body_force)
+              scene.body_force->vector_value(hv.quadrature_point(q), f);
+            for (unsigned int v = 0; v < 4; ++v)
+              {
+                const Tensor<1, 2> sg = sigma * hv.shape_grad(v, q);
+                for (unsigned int c = 0; c < 2; ++c)
+                  R[v][c] += (sg[c] - f[c] * hv.shape_value(v, q)) * hv.JxW(q);
+              }
+          }
+        for (unsigned int v = 0; v < 4; ++v)
+          for (unsigned int c = 0; c < 2; ++c)
+            scale = std::max(scale, std::abs(R[v][c]));
+        face_moments(cell, hfv, sfv);
+      }
+  }
+
+  void
+  FaceTractions::face_moments(const DoFHandler<2>::active_cell_iterator &cell,
+                              FEFaceValues<2>                           &hfv,
+                              FEFaceValues<2>                           &sfv)
+  {
+    // Loaded faces: their data moments leave R_K; the others: the averaged
+    // sigma_h n moments, the start of the vertex problems.
+    const unsigned int          n_q = hfv.n_quadrature_points;
+    std::vector<Vector<double>> s_face(
+      n_q, Vector<double>(MixedSpaces<2>::n_stress_components));
+    const unsigned int k = cell->active_cell_index();
+    auto              &R = cell_residual[k];
+    for (const unsigned int fn : cell->face_indices())
+      {
+        const unsigned int id   = cell->face(fn)->index();
+        Face              &face = faces[id];
+        hfv.reinit(Triangulation<2>::active_cell_iterator(cell), fn);
+        sfv.reinit(cell, fn);
+        sfv.get_function_values(results.stress, s_face);
+        const double side =
+          (face.boundary ? 1. : 0.5) * (face.owner == k ? 1. : -1.);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const Tensor<1, 2> n  = hfv.normal_vector(q);
+            const Tensor<1, 2> sn = stress_tensor<2>(s_face[q]) * n;
+            const Tensor<1, 2> t =
+              face.boundary ?
+                data_traction(face.boundary_id, hfv.quadrature_point(q), n) :
+                Tensor<1, 2>();
+            for (unsigned int a = 0; a < 2; ++a)
+              {
+                const unsigned int v =
+                  GeometryInfo<2>::face_to_cell_vertices(fn, a);
+                const unsigned int fa =
+                  (cell->vertex_index(v) == face.vertices[0]) ? 0 : 1;
+                const double phi = hfv.shape_value(v, q) * hfv.JxW(q);
+                for (unsigned int c = 0; c < 2; ++c)
+                  if (face.known[c])
+                    R[v][c] -= t[c] * phi;
+                  else
+                    average[id][fa][c] += side * sn[c] * phi;
+              }
+          }
+      }
+  }
+
+  void
+  FaceTractions::solve_vertex_problems()
+  {
+    const auto &tria         = results.triangulation();
+    const auto  vertex_cells = GridTools::vertex_to_cell_map(tria);
+    // The pseudo-inverse of each sign pattern (most vertices share one of a
+    // few).
+    std::map<std::vector<signed char>, FullMatrix<double>> pseudo_inverses;
+    const auto                                             pseudo_inverse =
+      [&](const FullMatrix<double> &A,
+          const unsigned int        m) -> const FullMatrix<double> & {
+      const unsigned int       n = A.m();
+      std::vector<signed char> key{(signed char)n, (signed char)m};
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < m; ++j)
+          key.push_back((signed char)A(i, j));
+      auto it = pseudo_inverses.find(key);
+      if (it == pseudo_inverses.end())
+        {
+          LAPACKFullMatrix<double> pinv(n, m);
+          pinv = A;
+          pinv.compute_inverse_svd(1e-12);
+          FullMatrix<double> P(m, n);
+          Vector<double>     unit(n), column(m);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              unit    = 0;
+              unit(i) = 1;
+              pinv.vmult(column, unit);
+              for (unsigned int j = 0; j < m; ++j)
+                P(j, i) = column(j);
+            }
+          it = pseudo_inverses.emplace(key, std::move(P)).first;
+        }
+      return it->second;
+    };
+    residual = 0;
+    for (unsigned int vi = 0; vi < vertex_cells.size(); ++vi)
+      {
+        // The cells around the vertex (with its index in each) and their
+        // faces through it.
+        const std::vector<Triangulation<2>::active_cell_iterator> cells(
+          vertex_cells[vi].begin(), vertex_cells[vi].end());
+        std::vector<unsigned int>              local;
+        std::vector<std::vector<unsigned int>> cell_faces(cells.size());
+        for (unsigned int i = 0; i < cells.size(); ++i)
+          {
+            for (unsigned int v = 0; v < 4; ++v)
+              if (cells[i]->vertex_index(v) == vi)
+                local.push_back(v);
+            for (const unsigned int fn : cells[i]->face_indices())
+              if (cells[i]->face(fn)->vertex_index(0) == vi ||
+                  cells[i]->face(fn)->vertex_index(1) == vi)
+                cell_faces[i].push_back(cells[i]->face(fn)->index());
+          }
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            std::vector<unsigned int> unknown;
+            for (const auto &fs : cell_faces)
+              for (const unsigned int id : fs)
+                if (!faces[id].known[c] &&
+                    std::find(unknown.begin(), unknown.end(), id) ==
+                      unknown.end())
+                  unknown.push_back(id);
+            const unsigned int n = cells.size(), m = unknown.size();
+            Vector<double>     r(n), b0(m), b(m);
+            FullMatrix<double> A(n, std::max(m, 1u));
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                r(i) =
+                  cell_residual[cells[i]->active_cell_index()][local[i]][c];
+                for (unsigned int j = 0; j < m; ++j)
+                  if (std::find(cell_faces[i].begin(),
+                                cell_faces[i].end(),
+                                unknown[j]) != cell_faces[i].end())
+                    A(i, j) =
+                      faces[unknown[j]].owner == cells[i]->active_cell_index() ?
+                        1. :
+                        -1.;
+              }
+            for (unsigned int j = 0; j < m; ++j)
+              b0(j) = average[unknown[j]]
+                             [faces[unknown[j]].vertices[0] == vi ? 0 : 1][c];
+            if (m > 0)
+              {
+                // b = b0 + A^+ (R - A b0); r: what is left, R - A b.
+                Vector<double> Ab0(n);
+                A.vmult(Ab0, b0);
+                r -= Ab0;
+                pseudo_inverse(A, m).vmult(b, r);
+                b += b0;
+                r = 0;
+                for (unsigned int i = 0; i < n; ++i)
+                  r(i) =
+                    cell_residual[cells[i]->active_cell_index()][local[i]][c];
+                Vector<double> Ab(n);
+                A.vmult(Ab, b);
+                r -= Ab;
+              }
+            residual = std::max(residual, r.linfty_norm());
+            for (unsigned int j = 0; j < m; ++j)
+              {
+                Face &face = faces[unknown[j]];
+                face.moment[face.vertices[0] == vi ? 0 : 1][c] = b(j);
+              }
+          }
+      }
+    residual = scale > 0 ? residual / scale : 0;
+  }
+} // namespace hrcontact

@@ -1,0 +1,242 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <hrcontact/adaptivity/triangle_split.h>
+
+#include <cmath>
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    double
+    power(const double x, const unsigned int n)
+    {
+      double r = 1;
+      for (unsigned int i = 0; i < n; ++i)
+        r *= x;
+      return r;
+    }
+
+    /** The cell's vertices counter-clockwise (deal.II's 0, 1, 3, 2). */
+    constexpr unsigned int ccw[4] = {0, 1, 3, 2};
+  } // namespace
+
+  FullMatrix<double>
+  component_compliance(const MaterialLaw<2> &law)
+  {
+    FullMatrix<double> S(3, 3);
+    for (unsigned int a = 0; a < 3; ++a)
+      {
+        const auto e =
+          law.strain(MixedSpaces<2>::stress_basis_tensor(a), Point<2>());
+        for (unsigned int b = 0; b < 3; ++b)
+          S(b, a) = MixedSpaces<2>::stress_basis_tensor(b) * e;
+      }
+    return S;
+  }
+
+  TriangleSplit::TriangleSplit(
+    const Triangulation<2>::active_cell_iterator &cell)
+  {
+    for (unsigned int k = 0; k < 4; ++k)
+      {
+        P[k] = cell->vertex(ccw[k]);
+        centre += P[k] / 4.;
+      }
+    P[4] = P[0];
+    h    = cell->diameter();
+  }
+
+  bool
+  TriangleSplit::parallelogram() const
+  {
+    return (P[2] - P[3] - (P[1] - P[0])).norm() <= 1e-12 * h;
+  }
+
+  unsigned int
+  TriangleSplit::triangle(const Point<2> &x) const
+  {
+    const auto cross = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b) {
+      return a[0] * b[1] - a[1] * b[0];
+    };
+    for (unsigned int k = 0; k < 4; ++k)
+      if (cross(P[k] - centre, x - centre) >= -1e-12 * h * h &&
+          cross(x - centre, P[k + 1] - centre) >= -1e-12 * h * h)
+        return k;
+    return 0;
+  }
+
+  void
+  TriangleSplit::rule(const unsigned int     n,
+                      std::vector<Point<2>> &points,
+                      std::vector<double>   &weights) const
+  {
+    const QGauss<1> g(n);
+    for (unsigned int k = 0; k < 4; ++k)
+      {
+        const Point<2> &a = centre, &b = P[k], &c = P[k + 1];
+        const double    area2 = std::abs((b[0] - a[0]) * (c[1] - a[1]) -
+                                      (b[1] - a[1]) * (c[0] - a[0]));
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const double u = g.point(i)[0], v = g.point(j)[0] * (1 - u);
+              points.push_back(a + u * (b - a) + v * (c - a));
+              weights.push_back(g.weight(i) * g.weight(j) * (1 - u) * area2);
+            }
+      }
+  }
+
+  TrianglePolynomials::TrianglePolynomials(const unsigned int degree)
+    : degree(degree)
+  {
+    for (unsigned int d = 0; d <= degree; ++d)
+      for (unsigned int a = 0; a <= d; ++a)
+        monomials.push_back({{d - a, a}});
+  }
+
+  double
+  TrianglePolynomials::value(const TriangleSplit &split,
+                             const Point<2>      &x,
+                             const unsigned int   m) const
+  {
+    const Tensor<1, 2> xi = (x - split.centre) / split.h;
+    return power(xi[0], monomials[m][0]) * power(xi[1], monomials[m][1]);
+  }
+
+  Tensor<1, 2>
+  TrianglePolynomials::gradient(const TriangleSplit &split,
+                                const Point<2>      &x,
+                                const unsigned int   m) const
+  {
+    const Tensor<1, 2> xi = (x - split.centre) / split.h;
+    const auto [a, b]     = monomials[m];
+    Tensor<1, 2> g;
+    if (a > 0)
+      g[0] = a * power(xi[0], a - 1) * power(xi[1], b) / split.h;
+    if (b > 0)
+      g[1] = b * power(xi[0], a) * power(xi[1], b - 1) / split.h;
+    return g;
+  }
+
+  SymmetricTensor<2, 2>
+  TrianglePolynomials::stress(const Vector<double> &x,
+                              const TriangleSplit  &split,
+                              const unsigned int    k,
+                              const Point<2>       &point) const
+  {
+    SymmetricTensor<2, 2> t;
+    for (unsigned int m = 0; m < monomials.size(); ++m)
+      {
+        const double v = value(split, point, m);
+        t[0][0] += x(index(k, 0, m)) * v;
+        t[1][1] += x(index(k, 1, m)) * v;
+        t[0][1] += x(index(k, 2, m)) * v;
+      }
+    return t;
+  }
+
+  CellSampler::CellSampler(const Results<2> &results)
+    : results(results)
+    , fe_u(*results.spaces.fe_displacement)
+    , fe_s(*results.spaces.fe_stress)
+    , u_dofs(fe_u.n_dofs_per_cell())
+    , s_dofs(fe_s.n_dofs_per_cell())
+  {
+    for (unsigned int i = 0; i < fe_u.n_dofs_per_cell(); ++i)
+      u_component.push_back(fe_u.system_to_component_index(i).first);
+    for (unsigned int j = 0; j < fe_s.n_dofs_per_cell(); ++j)
+      s_tensor.push_back(MixedSpaces<2>::stress_basis_tensor(
+        fe_s.system_to_component_index(j).first));
+  }
+
+  void
+  CellSampler::tabulate(Table &t) const
+  {
+    static const FE_Q<2> hat(1);
+    const unsigned int   n = t.unit.size();
+    t.u_grad.assign(n, std::vector<Tensor<1, 2>>(u_dofs.size()));
+    t.hat_grad.assign(n, std::vector<Tensor<1, 2>>(4));
+    t.s_value.assign(n, std::vector<double>(s_dofs.size()));
+    for (unsigned int q = 0; q < n; ++q)
+      {
+        for (unsigned int i = 0; i < u_dofs.size(); ++i)
+          t.u_grad[q][i] = fe_u.shape_grad(i, t.unit[q]);
+        for (unsigned int v = 0; v < 4; ++v)
+          t.hat_grad[q][v] = hat.shape_grad(v, t.unit[q]);
+        for (unsigned int j = 0; j < s_dofs.size(); ++j)
+          t.s_value[q][j] = fe_s.shape_value(j, t.unit[q]);
+      }
+  }
+
+  void
+  CellSampler::operator()(const DoFHandler<2>::active_cell_iterator &cell,
+                          const std::vector<Point<2>>               &points,
+                          const bool                          parallelogram,
+                          std::vector<SymmetricTensor<2, 2>> &eps,
+                          std::vector<SymmetricTensor<2, 2>> &sigma)
+  {
+    cell->get_dof_indices(u_dofs);
+    const DoFHandler<2>::active_cell_iterator s_cell(
+      &results.triangulation(),
+      cell->level(),
+      cell->index(),
+      &results.spaces.dof_handler_stress);
+    s_cell->get_dof_indices(s_dofs);
+    const Point<2>     v0 = cell->vertex(0);
+    const Tensor<1, 2> e1 = cell->vertex(1) - v0, e2 = cell->vertex(2) - v0;
+    Tensor<2, 2>       J;
+    for (unsigned int d = 0; d < 2; ++d)
+      {
+        J[d][0] = e1[d];
+        J[d][1] = e2[d];
+      }
+    const Tensor<2, 2> J_inv = invert(J), J_inv_T = transpose(J_inv);
+    const Table       *table = &own;
+    if (parallelogram)
+      {
+        Table &t = tables[points.size()];
+        if (t.unit.empty())
+          {
+            for (const Point<2> &x : points)
+              t.unit.emplace_back(J_inv * (x - v0));
+            tabulate(t);
+          }
+        table = &t;
+      }
+    else
+      {
+        own.unit.clear();
+        for (const Point<2> &x : points)
+          own.unit.push_back(
+            StaticMappingQ1<2>::mapping.transform_real_to_unit_cell(cell, x));
+        tabulate(own);
+      }
+    eps.assign(points.size(), SymmetricTensor<2, 2>());
+    sigma.assign(points.size(), SymmetricTensor<2, 2>());
+    for (unsigned int q = 0; q < points.size(); ++q)
+      {
+        Tensor<2, 2> Jq_inv_T = J_inv_T;
+        if (!parallelogram)
+          {
+            Tensor<2, 2> Jq;
+            for (unsigned int v = 0; v < 4; ++v)
+              Jq += outer_product(cell->vertex(v), table->hat_grad[q][v]);
+            Jq_inv_T = transpose(invert(Jq));
+          }
+        Tensor<2, 2> grad;
+        for (unsigned int i = 0; i < u_dofs.size(); ++i)
+          grad[u_component[i]] +=
+            results.displacement(u_dofs[i]) * (Jq_inv_T * table->u_grad[q][i]);
+        eps[q] = symmetrize(grad);
+        for (unsigned int j = 0; j < s_dofs.size(); ++j)
+          sigma[q] +=
+            results.stress(s_dofs[j]) * table->s_value[q][j] * s_tensor[j];
+      }
+  }
+} // namespace hrcontact
