@@ -35,9 +35,9 @@ namespace hrcontact
     , lower(degree - 1)
     , sampler(results)
   {
-    for (unsigned int i = 0; i < results.stress.size(); ++i)
-      sigma_max = std::max(sigma_max, std::abs(results.stress(i)));
-    n_rows = 4 * 2 * lower.monomials.size() + 8 * 2 * (degree + 1);
+    // The largest stress dof over every process.
+    sigma_max = results.stress.linfty_norm();
+    n_rows    = 4 * 2 * lower.monomials.size() + 8 * 2 * (degree + 1);
   }
 
   void

@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <hrcontact/adaptivity/cell_equilibration.h>
 #include <hrcontact/adaptivity/equilibrated_stress.h>
 #include <hrcontact/adaptivity/face_tractions.h>
@@ -18,8 +20,6 @@ namespace hrcontact
     const std::string what = "Postprocess/Error bound";
     if (dim != 2)
       throw InputError(what + " is computed in 2D only so far.");
-    if (results.partition.distributed())
-      throw InputError(what + " is computed on one process only so far.");
     if (results.has_contact)
       throw InputError(what + " does not cover contact yet (its tractions "
                               "on the contact faces are not built).");
@@ -43,7 +43,7 @@ namespace hrcontact
     double s = 0;
     for (const double b : bound_squared)
       s += b;
-    return std::sqrt(s);
+    return std::sqrt(Utilities::MPI::sum(s, results.partition.communicator));
   }
 
   template <int dim>
@@ -61,15 +61,18 @@ namespace hrcontact
         solution_energy = 0;
         for (const auto &cell :
              results.spaces.dof_handler_displacement.active_cell_iterators())
-          {
-            double energy = 0;
-            cells.solve(cell,
-                        coefficients[cell->active_cell_index()],
-                        bound_squared[cell->active_cell_index()],
-                        energy);
-            solution_energy += energy;
-          }
-        cell_residual = cells.residual;
+          if (results.partition.owned_cell[cell->active_cell_index()])
+            {
+              double energy = 0;
+              cells.solve(cell,
+                          coefficients[cell->active_cell_index()],
+                          bound_squared[cell->active_cell_index()],
+                          energy);
+              solution_energy += energy;
+            }
+        const MPI_Comm comm = results.partition.communicator;
+        cell_residual       = Utilities::MPI::max(cells.residual, comm);
+        solution_energy     = Utilities::MPI::sum(solution_energy, comm);
       }
   }
 
@@ -107,52 +110,60 @@ namespace hrcontact
         Vector<double>            ref(MixedSpaces<dim>::n_stress_components);
         for (const auto &cell :
              results.spaces.dof_handler_displacement.active_cell_iterators())
-          {
-            const TriangleSplit split(cell);
-            // More points than the bound's rule: the reference field is not
-            // a polynomial.
-            const unsigned int    n_tri = split.parallelogram() ? 6 : 10;
-            std::vector<Point<2>> points;
-            std::vector<double>   weights;
-            split.rule(n_tri, points, weights);
-            std::vector<SymmetricTensor<2, dim>> eps, sigma_h;
-            sampler(cell, points, split.parallelogram(), eps, sigma_h);
-            const auto &law = results.scene.material_of(cell->material_id());
-            // C eps(u_h): the law gives C^-1; invert it on the components.
-            FullMatrix<double> C(3, 3);
-            C.invert(component_compliance(law));
-            const auto elastic_stress = [&](const SymmetricTensor<2, 2> &e) {
-              const double          ev[3] = {e[0][0], e[1][1], 2 * e[0][1]};
-              SymmetricTensor<2, 2> s;
-              for (unsigned int b = 0; b < 3; ++b)
+          if (results.partition.owned_cell[cell->active_cell_index()])
+            {
+              const TriangleSplit split(cell);
+              // More points than the bound's rule: the reference field is not
+              // a polynomial.
+              const unsigned int    n_tri = split.parallelogram() ? 6 : 10;
+              std::vector<Point<2>> points;
+              std::vector<double>   weights;
+              split.rule(n_tri, points, weights);
+              std::vector<SymmetricTensor<2, dim>> eps, sigma_h;
+              sampler(cell, points, split.parallelogram(), eps, sigma_h);
+              const auto &law = results.scene.material_of(cell->material_id());
+              // C eps(u_h): the law gives C^-1; invert it on the components.
+              FullMatrix<double> C(3, 3);
+              C.invert(component_compliance(law));
+              const auto elastic_stress = [&](const SymmetricTensor<2, 2> &e) {
+                const double          ev[3] = {e[0][0], e[1][1], 2 * e[0][1]};
+                SymmetricTensor<2, 2> s;
+                for (unsigned int b = 0; b < 3; ++b)
+                  {
+                    s[0][0] += C(0, b) * ev[b];
+                    s[1][1] += C(1, b) * ev[b];
+                    s[0][1] += C(2, b) * ev[b];
+                  }
+                return s;
+              };
+              const auto energy = [&](const SymmetricTensor<2, dim> &s) {
+                return s * law.strain(s, Point<dim>());
+              };
+              for (unsigned int q = 0; q < points.size(); ++q)
                 {
-                  s[0][0] += C(0, b) * ev[b];
-                  s[1][1] += C(1, b) * ev[b];
-                  s[0][1] += C(2, b) * ev[b];
+                  reference.vector_value(points[q], ref);
+                  const auto sigma = stress_tensor<dim>(ref);
+                  const auto tau =
+                    polynomials.stress(coefficients[cell->active_cell_index()],
+                                       split,
+                                       q / (n_tri * n_tri),
+                                       points[q]);
+                  const auto   Ceps = elastic_stress(eps[q]);
+                  const double w    = weights[q];
+                  result.displacement_error_squared += w * energy(sigma - Ceps);
+                  result.reconstruction_error_squared +=
+                    w * energy(sigma - tau);
+                  result.stress_error_squared += w * energy(sigma - sigma_h[q]);
+                  result.reference_energy_squared += w * energy(sigma);
                 }
-              return s;
-            };
-            const auto energy = [&](const SymmetricTensor<2, dim> &s) {
-              return s * law.strain(s, Point<dim>());
-            };
-            for (unsigned int q = 0; q < points.size(); ++q)
-              {
-                reference.vector_value(points[q], ref);
-                const auto sigma = stress_tensor<dim>(ref);
-                const auto tau =
-                  polynomials.stress(coefficients[cell->active_cell_index()],
-                                     split,
-                                     q / (n_tri * n_tri),
-                                     points[q]);
-                const auto   Ceps = elastic_stress(eps[q]);
-                const double w    = weights[q];
-                result.displacement_error_squared += w * energy(sigma - Ceps);
-                result.reconstruction_error_squared += w * energy(sigma - tau);
-                result.stress_error_squared += w * energy(sigma - sigma_h[q]);
-                result.reference_energy_squared += w * energy(sigma);
-              }
-          }
+            }
       }
+    const MPI_Comm comm = results.partition.communicator;
+    for (double *v : {&result.displacement_error_squared,
+                      &result.reconstruction_error_squared,
+                      &result.stress_error_squared,
+                      &result.reference_energy_squared})
+      *v = Utilities::MPI::sum(*v, comm);
     return result;
   }
 

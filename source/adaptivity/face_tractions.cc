@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/fe/fe_q.h>
@@ -37,6 +38,34 @@ namespace hrcontact
   FaceTractions::FaceTractions(const Results<2> &results)
     : results(results)
   {
+    // The cells whose stresses and displacements this process holds (its
+    // own and its ghosts): the vertex problems of its own cells' vertices
+    // need no more.
+    usable.assign(results.triangulation().n_active_cells(), false);
+    std::vector<types::global_dof_index> dofs;
+    const auto holds = [](const FieldVector &v, const auto &indices) {
+      for (const auto i : indices)
+        if (!v.in_local_range(i) && !v.get_partitioner()->is_ghost_entry(i))
+          return false;
+      return true;
+    };
+    for (const auto &cell :
+         results.spaces.dof_handler_stress.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          dofs.resize(cell->get_fe().n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          bool ok = holds(results.stress, dofs);
+          const DoFHandler<2>::active_cell_iterator u_cell(
+            &results.triangulation(),
+            cell->level(),
+            cell->index(),
+            &results.spaces.dof_handler_displacement);
+          dofs.resize(u_cell->get_fe().n_dofs_per_cell());
+          u_cell->get_dof_indices(dofs);
+          usable[cell->active_cell_index()] =
+            ok && holds(results.displacement, dofs);
+        }
     classify_faces();
     cell_residuals();
     solve_vertex_problems();
@@ -73,7 +102,7 @@ namespace hrcontact
       for (const unsigned int f : cell->face_indices())
         {
           const unsigned int id = cell->face(f)->index();
-          if (seen[id])
+          if (seen[id] || !usable[cell->active_cell_index()])
             continue;
           seen[id]      = true;
           Face &face    = faces[id];
@@ -169,29 +198,31 @@ namespace hrcontact
     Vector<double> f(2);
     for (const auto &cell :
          results.spaces.dof_handler_stress.active_cell_iterators())
-      {
-        hv.reinit(Triangulation<2>::active_cell_iterator(cell));
-        sv.reinit(cell);
-        sv.get_function_values(results.stress, s_values);
-        auto &R = cell_residual[cell->active_cell_index()];
-        for (unsigned int q = 0; q < q_cell.size(); ++q)
-          {
-            const auto sigma = stress_tensor<2>(s_values[q]);
-            f                = 0;
-            if (scene.body_force)
-              scene.body_force->vector_value(hv.quadrature_point(q), f);
-            for (unsigned int v = 0; v < 4; ++v)
-              {
-                const Tensor<1, 2> sg = sigma * hv.shape_grad(v, q);
-                for (unsigned int c = 0; c < 2; ++c)
-                  R[v][c] += (sg[c] - f[c] * hv.shape_value(v, q)) * hv.JxW(q);
-              }
-          }
-        for (unsigned int v = 0; v < 4; ++v)
-          for (unsigned int c = 0; c < 2; ++c)
-            scale = std::max(scale, std::abs(R[v][c]));
-        face_moments(cell, hfv, sfv);
-      }
+      if (usable[cell->active_cell_index()])
+        {
+          hv.reinit(Triangulation<2>::active_cell_iterator(cell));
+          sv.reinit(cell);
+          sv.get_function_values(results.stress, s_values);
+          auto &R = cell_residual[cell->active_cell_index()];
+          for (unsigned int q = 0; q < q_cell.size(); ++q)
+            {
+              const auto sigma = stress_tensor<2>(s_values[q]);
+              f                = 0;
+              if (scene.body_force)
+                scene.body_force->vector_value(hv.quadrature_point(q), f);
+              for (unsigned int v = 0; v < 4; ++v)
+                {
+                  const Tensor<1, 2> sg = sigma * hv.shape_grad(v, q);
+                  for (unsigned int c = 0; c < 2; ++c)
+                    R[v][c] +=
+                      (sg[c] - f[c] * hv.shape_value(v, q)) * hv.JxW(q);
+                }
+            }
+          for (unsigned int v = 0; v < 4; ++v)
+            for (unsigned int c = 0; c < 2; ++c)
+              scale = std::max(scale, std::abs(R[v][c]));
+          face_moments(cell, hfv, sfv);
+        }
   }
 
   void
@@ -240,49 +271,62 @@ namespace hrcontact
       }
   }
 
+  const FullMatrix<double> &
+  FaceTractions::pseudo_inverse(const FullMatrix<double> &A,
+                                const unsigned int        m)
+  {
+    // Kept per sign pattern: most vertices share one of a few.
+    const unsigned int       n = A.m();
+    std::vector<signed char> key{(signed char)n, (signed char)m};
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < m; ++j)
+        key.push_back((signed char)A(i, j));
+    auto it = pseudo_inverses.find(key);
+    if (it == pseudo_inverses.end())
+      {
+        LAPACKFullMatrix<double> pinv(n, m);
+        pinv = A;
+        pinv.compute_inverse_svd(1e-12);
+        FullMatrix<double> P(m, n);
+        Vector<double>     unit(n), column(m);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            unit    = 0;
+            unit(i) = 1;
+            pinv.vmult(column, unit);
+            for (unsigned int j = 0; j < m; ++j)
+              P(j, i) = column(j);
+          }
+        it = pseudo_inverses.emplace(key, std::move(P)).first;
+      }
+    return it->second;
+  }
+
   void
   FaceTractions::solve_vertex_problems()
   {
     const auto &tria         = results.triangulation();
     const auto  vertex_cells = GridTools::vertex_to_cell_map(tria);
-    // The pseudo-inverse of each sign pattern (most vertices share one of a
-    // few).
-    std::map<std::vector<signed char>, FullMatrix<double>> pseudo_inverses;
-    const auto                                             pseudo_inverse =
-      [&](const FullMatrix<double> &A,
-          const unsigned int        m) -> const FullMatrix<double> & {
-      const unsigned int       n = A.m();
-      std::vector<signed char> key{(signed char)n, (signed char)m};
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int j = 0; j < m; ++j)
-          key.push_back((signed char)A(i, j));
-      auto it = pseudo_inverses.find(key);
-      if (it == pseudo_inverses.end())
-        {
-          LAPACKFullMatrix<double> pinv(n, m);
-          pinv = A;
-          pinv.compute_inverse_svd(1e-12);
-          FullMatrix<double> P(m, n);
-          Vector<double>     unit(n), column(m);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              unit    = 0;
-              unit(i) = 1;
-              pinv.vmult(column, unit);
-              for (unsigned int j = 0; j < m; ++j)
-                P(j, i) = column(j);
-            }
-          it = pseudo_inverses.emplace(key, std::move(P)).first;
-        }
-      return it->second;
-    };
-    residual = 0;
+    residual                 = 0;
     for (unsigned int vi = 0; vi < vertex_cells.size(); ++vi)
       {
         // The cells around the vertex (with its index in each) and their
         // faces through it.
         const std::vector<Triangulation<2>::active_cell_iterator> cells(
           vertex_cells[vi].begin(), vertex_cells[vi].end());
+        // Only the vertices of this process's own cells (whose patches it
+        // holds whole).
+        bool own = false, whole = true;
+        for (const auto &c : cells)
+          {
+            own |= results.partition.owned_cell[c->active_cell_index()];
+            whole &= usable[c->active_cell_index()];
+          }
+        if (!own || cells.empty())
+          continue;
+        AssertThrow(whole,
+                    ExcMessage("Error bound: a vertex patch of an own cell "
+                               "is not held whole by this process."));
         std::vector<unsigned int>              local;
         std::vector<std::vector<unsigned int>> cell_faces(cells.size());
         for (unsigned int i = 0; i < cells.size(); ++i)
@@ -347,6 +391,9 @@ namespace hrcontact
               }
           }
       }
-    residual = scale > 0 ? residual / scale : 0;
+    const MPI_Comm comm = results.partition.communicator;
+    scale               = Utilities::MPI::max(scale, comm);
+    residual            = Utilities::MPI::max(residual, comm);
+    residual            = scale > 0 ? residual / scale : 0;
   }
 } // namespace hrcontact

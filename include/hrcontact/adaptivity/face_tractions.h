@@ -6,9 +6,12 @@
 
 #include <deal.II/fe/fe_values.h>
 
+#include <deal.II/lac/full_matrix.h>
+
 #include <hrcontact/core/results.h>
 
 #include <array>
+#include <map>
 #include <vector>
 
 namespace hrcontact
@@ -72,6 +75,8 @@ namespace hrcontact
 
   private:
     const Results<2> &results;
+    /** Per active cell: whether this process holds its fields. */
+    std::vector<bool> usable;
     std::vector<Face> faces;
     /** R_K per cell, vertex and component; the averaged moments per face,
      * face vertex and component. */
@@ -89,6 +94,11 @@ namespace hrcontact
                  dealii::FEFaceValues<2> &stress_values);
     void
     solve_vertex_problems();
+    /** A^+ of a vertex problem's +-1 matrix (its first m columns). */
+    const dealii::FullMatrix<double> &
+    pseudo_inverse(const dealii::FullMatrix<double> &A, const unsigned int m);
+    std::map<std::vector<signed char>, dealii::FullMatrix<double>>
+      pseudo_inverses;
   };
 } // namespace hrcontact
 
