@@ -33,7 +33,7 @@ namespace hrcontact
    *
    * Exact for body forces of degree < CellEquilibration::degree and
    * tractions of degree <= CellEquilibration::degree on each face; other
-   * data are projected. So far: 2D, one process, conforming meshes, linear
+   * data are projected. So far: 2D, conforming meshes, linear
    * elastic bodies, supports by prescribed displacements and point supports
    * (no contact rows); other scenes are refused by name.
    */
