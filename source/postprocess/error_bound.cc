@@ -3,6 +3,7 @@
 #include <hrcontact/adaptivity/cell_equilibration.h>
 #include <hrcontact/adaptivity/equilibrated_stress.h>
 #include <hrcontact/postprocess/error_bound.h>
+#include <hrcontact/postprocess/field_values.h>
 
 #include <cmath>
 #include <iomanip>
@@ -36,14 +37,9 @@ namespace hrcontact
                                     const Constants  &constants)
   {
     prm.enter_subsection("Postprocess");
-    compute              = prm.get_bool("Error bound");
-    const std::string rs = prm.get("Reference stress");
-    if (compute && !Utilities::trim(rs).empty())
-      reference_stress =
-        make_function<dim>(rs,
-                           MixedSpaces<dim>::n_stress_components,
-                           constants,
-                           "Postprocess/Reference stress");
+    compute = prm.get_bool("Error bound");
+    if (compute)
+      reference_stress = parse_reference_stress<dim>(prm, constants);
     prm.leave_subsection();
   }
 

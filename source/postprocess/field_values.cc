@@ -212,6 +212,19 @@ namespace hrcontact
             l2_ref > 0 ? std::sqrt(l2_err / l2_ref) : std::sqrt(l2_err)};
   }
 
+  template <int dim>
+  std::unique_ptr<FunctionParser<dim>>
+  parse_reference_stress(ParameterHandler &prm, const Constants &constants)
+  {
+    const std::string text = prm.get("Reference stress");
+    if (Utilities::trim(text).empty())
+      return nullptr;
+    return make_function<dim>(text,
+                              MixedSpaces<dim>::n_stress_components,
+                              constants,
+                              "Postprocess/Reference stress");
+  }
+
 #define HRCONTACT_INSTANTIATE(dim)                                             \
   template SymmetricTensor<2, dim> stress_tensor<dim>(const Vector<double> &); \
   template double von_mises<dim>(const SymmetricTensor<2, dim> &,              \
@@ -219,8 +232,10 @@ namespace hrcontact
   template double point_value<dim>(const Results<dim> &,                       \
                                    const Point<dim> &,                         \
                                    const std::string &);                       \
-  template bool   mesh_contains_point<dim>(const Triangulation<dim> &,         \
-                                         const Point<dim> &);                \
+  template std::unique_ptr<FunctionParser<dim>> parse_reference_stress<dim>(   \
+    ParameterHandler &, const Constants &);                                    \
+  template bool mesh_contains_point<dim>(const Triangulation<dim> &,           \
+                                         const Point<dim> &);                  \
   template std::pair<double, double> stress_error<dim>(                        \
     const MixedSpaces<dim> &, const FieldVector &, const Function<dim> &);
   HRCONTACT_INSTANTIATE(2)

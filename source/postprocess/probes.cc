@@ -92,13 +92,7 @@ namespace hrcontact
           evaluate_constant_expression(
             expr, constants, "Postprocess/Reference values, '" + name + "'"));
       }
-    const std::string rs = prm.get("Reference stress");
-    if (!Utilities::trim(rs).empty())
-      reference_stress =
-        make_function<dim>(rs,
-                           MixedSpaces<dim>::n_stress_components,
-                           constants,
-                           "Postprocess/Reference stress");
+    reference_stress = parse_reference_stress<dim>(prm, constants);
     prm.leave_subsection();
   }
 

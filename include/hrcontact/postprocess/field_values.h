@@ -2,13 +2,17 @@
 #define hrcontact_field_values_h
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <deal.II/lac/vector.h>
 
+#include <hrcontact/core/input.h>
 #include <hrcontact/core/results.h>
 
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -19,6 +23,16 @@ namespace hrcontact
   template <int dim>
   dealii::SymmetricTensor<2, dim>
   stress_tensor(const dealii::Vector<double> &components);
+
+  /**
+   * The entry Postprocess/Reference stress (the subsection entered) as a
+   * function of dim (dim + 1) / 2 components, or null when it is empty;
+   * read by the probes and the error bound.
+   */
+  template <int dim>
+  std::unique_ptr<dealii::FunctionParser<dim>>
+  parse_reference_stress(dealii::ParameterHandler &prm,
+                         const Constants          &constants);
 
   /** von Mises stress including the out-of-plane component szz in 2D. */
   template <int dim>
