@@ -13,9 +13,6 @@ namespace hrcontact
 
   namespace
   {
-    /** The cell's vertices counter-clockwise (deal.II's 0, 1, 3, 2). */
-    constexpr unsigned int ccw[4] = {0, 1, 3, 2};
-
     /** The Legendre-like test functions s^j, s in [-1, 1], on an edge. */
     double
     edge_test(const double s, const unsigned int j)
@@ -38,6 +35,21 @@ namespace hrcontact
     // The largest stress dof over every process.
     sigma_max = results.stress.linfty_norm();
     n_rows    = 4 * 2 * lower.monomials.size() + 8 * 2 * (degree + 1);
+  }
+
+  const std::pair<FullMatrix<double>, FullMatrix<double>> &
+  CellEquilibration::compliances(const types::material_id body)
+  {
+    auto it = compliance.find(body);
+    if (it == compliance.end())
+      {
+        FullMatrix<double> S = component_compliance(
+                             results.scene.material_of(body)),
+                           S_inv(3, 3);
+        S_inv.invert(S);
+        it = compliance.emplace(body, std::make_pair(S, S_inv)).first;
+      }
+    return it->second;
   }
 
   void
@@ -121,9 +133,8 @@ namespace hrcontact
     Factors                    F;
     constraint_matrix(split, points, weights, F.A);
     // The energy's Hessian H = sum_q w_q B_q^T S B_q.
-    const FullMatrix<double> S =
-      component_compliance(results.scene.material_of(body));
-    FullMatrix<double> H(n, n);
+    const FullMatrix<double> &S = compliances(body).first;
+    FullMatrix<double>        H(n, n);
     for (unsigned int q = 0; q < points.size(); ++q)
       for (unsigned int m1 = 0; m1 < P.monomials.size(); ++m1)
         for (unsigned int m2 = 0; m2 < P.monomials.size(); ++m2)
@@ -198,17 +209,8 @@ namespace hrcontact
     const QGauss<1> edge_rule(degree + 3);
     for (unsigned int k = 0; k < 4; ++k)
       {
-        unsigned int face = 0;
-        for (const unsigned int fn : cell->face_indices())
-          {
-            const unsigned int v0 =
-                                 GeometryInfo<2>::face_to_cell_vertices(fn, 0),
-                               v1 =
-                                 GeometryInfo<2>::face_to_cell_vertices(fn, 1);
-            if ((v0 == ccw[k] && v1 == ccw[(k + 1) % 4]) ||
-                (v1 == ccw[k] && v0 == ccw[(k + 1) % 4]))
-              face = cell->face(fn)->index();
-          }
+        const unsigned int face =
+          cell->face(TriangleSplit::face_under_edge[k])->index();
         const Point<2>     a = split.P[k];
         const Tensor<1, 2> d = split.P[k + 1] - a;
         const double       L = d.norm();
@@ -269,10 +271,7 @@ namespace hrcontact
 
     // This cell's share of eta^2 (tau - C eps(u_h), with C eps = S^-1 e)
     // and of the computed stresses' energy.
-    const FullMatrix<double> S =
-      component_compliance(results.scene.material_of(cell->material_id()));
-    FullMatrix<double> S_inv(3, 3);
-    S_inv.invert(S);
+    const auto &[S, S_inv] = compliances(cell->material_id());
     Vector<double> e(3), Ce(3), v(3), Sv(3);
     bound_squared = energy_squared = 0;
     for (unsigned int q = 0; q < points.size(); ++q)

@@ -77,28 +77,6 @@ namespace hrcontact
   }
 
   template <int dim>
-  SymmetricTensor<2, dim>
-  EquilibratedStress<dim>::value(const unsigned int cell,
-                                 const Point<dim>  &point) const
-  {
-    SymmetricTensor<2, dim> tau;
-    if constexpr (dim == 2)
-      {
-        const TrianglePolynomials polynomials(CellEquilibration::degree);
-        for (const auto &c : results.triangulation().active_cell_iterators())
-          if (c->active_cell_index() == cell)
-            {
-              const TriangleSplit split(c);
-              tau = polynomials.stress(coefficients[cell],
-                                       split,
-                                       split.triangle(point),
-                                       point);
-            }
-      }
-    return tau;
-  }
-
-  template <int dim>
   typename EquilibratedStress<dim>::Comparison
   EquilibratedStress<dim>::compare(const Function<dim> &reference) const
   {

@@ -21,9 +21,6 @@ namespace hrcontact
         r *= x;
       return r;
     }
-
-    /** The cell's vertices counter-clockwise (deal.II's 0, 1, 3, 2). */
-    constexpr unsigned int ccw[4] = {0, 1, 3, 2};
   } // namespace
 
   FullMatrix<double>
@@ -45,7 +42,7 @@ namespace hrcontact
   {
     for (unsigned int k = 0; k < 4; ++k)
       {
-        P[k] = cell->vertex(ccw[k]);
+        P[k] = cell->vertex(corner[k]);
         centre += P[k] / 4.;
       }
     P[4] = P[0];
@@ -56,19 +53,6 @@ namespace hrcontact
   TriangleSplit::parallelogram() const
   {
     return (P[2] - P[3] - (P[1] - P[0])).norm() <= 1e-12 * h;
-  }
-
-  unsigned int
-  TriangleSplit::triangle(const Point<2> &x) const
-  {
-    const auto cross = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b) {
-      return a[0] * b[1] - a[1] * b[0];
-    };
-    for (unsigned int k = 0; k < 4; ++k)
-      if (cross(P[k] - centre, x - centre) >= -1e-12 * h * h &&
-          cross(x - centre, P[k + 1] - centre) >= -1e-12 * h * h)
-        return k;
-    return 0;
   }
 
   void

@@ -59,6 +59,9 @@ namespace hrcontact
             const dealii::types::material_id     body,
             const std::vector<dealii::Point<2>> &points,
             const std::vector<double>           &weights);
+    /** The compliance on the stress components and its inverse, per body. */
+    const std::pair<dealii::FullMatrix<double>, dealii::FullMatrix<double>> &
+    compliances(const dealii::types::material_id body);
     void
     constraint_matrix(const TriangleSplit                 &split,
                       const std::vector<dealii::Point<2>> &points,
@@ -76,8 +79,11 @@ namespace hrcontact
     const TrianglePolynomials                 lower;
     CellSampler                               sampler;
     std::map<std::vector<long long>, Factors> cache;
-    double                                    sigma_max = 0;
-    unsigned int                              n_rows    = 0;
+    std::map<dealii::types::material_id,
+             std::pair<dealii::FullMatrix<double>, dealii::FullMatrix<double>>>
+                 compliance;
+    double       sigma_max = 0;
+    unsigned int n_rows    = 0;
   };
 } // namespace hrcontact
 

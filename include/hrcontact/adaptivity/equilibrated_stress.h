@@ -89,10 +89,6 @@ namespace hrcontact
     Comparison
     compare(const dealii::Function<dim> &reference) const;
 
-    /** tau at a point of cell @p cell (active index). */
-    dealii::SymmetricTensor<2, dim>
-    value(const unsigned int cell, const dealii::Point<dim> &point) const;
-
   private:
     const Results<dim> &results;
     /** The polynomial coefficients of each cell's four triangles. */

@@ -34,6 +34,11 @@ namespace hrcontact
     explicit TriangleSplit(
       const dealii::Triangulation<2>::active_cell_iterator &cell);
 
+    /** The cell's vertices counter-clockwise (deal.II's 0, 1, 3, 2), and
+     * the cell's face under the edge P_k P_{k+1}. */
+    static constexpr unsigned int corner[4]          = {0, 1, 3, 2};
+    static constexpr unsigned int face_under_edge[4] = {2, 1, 3, 0};
+
     std::array<dealii::Point<2>, 5> P;
     dealii::Point<2>                centre;
     double                          h = 1;
@@ -41,10 +46,6 @@ namespace hrcontact
     /** Whether the opposite sides are parallel (the Q1 map affine). */
     bool
     parallelogram() const;
-
-    /** The triangle holding @p x. */
-    unsigned int
-    triangle(const dealii::Point<2> &x) const;
 
     /** Duffy's collapse of an n x n Gauss rule on each triangle (exact to
      * degree 2n - 2); triangle k's points start at k n^2. */
