@@ -71,6 +71,18 @@ namespace hrcontact
         "from 4 refinements: 2 linear solves per cycle instead of 2-3 after "
         "about 30 on coarser levels (doc/adaptivity.md). false: every cycle "
         "from the start (for comparison).");
+      prm.declare_entry(
+        "Target error",
+        "0",
+        Patterns::Double(0, 1),
+        "Stop the cycles once the guaranteed bound of the energy error "
+        "(doc/error-bounds.md), relative to the energy norm of the computed "
+        "stresses, is at or below this (0.01: 1 %; 0: no target, all "
+        "Adaptive cycles run). Adaptive cycles is then the most cycles "
+        "tried; a run that ends above the target says so in the log and in "
+        "summary.txt (target_error_reached = 0). The bound covers 2D linear "
+        "elastic bodies without contact so far; it is computed each cycle "
+        "(with Estimator = bound, once for both).");
       prm.declare_entry("Maximum dofs",
                         "0",
                         Patterns::Integer(0),
@@ -95,6 +107,7 @@ namespace hrcontact
                           "Marking",
                           {{"fixed number", false}, {"fixed fraction", true}});
     maximum_dofs = prm.get_integer("Maximum dofs");
+    target_error = prm.get_double("Target error");
     carry_state  = prm.get_bool("Carry state");
     prm.leave_subsection();
     const std::string where = "Mesh refinement/";

@@ -1,7 +1,9 @@
 #include <deal.II/base/timer.h>
 
 #include <hrcontact/adaptivity/adaptive_run.h>
+#include <hrcontact/adaptivity/bound_indicator.h>
 #include <hrcontact/adaptivity/contact_zone_refinement.h>
+#include <hrcontact/adaptivity/equilibrated_stress.h>
 #include <hrcontact/adaptivity/refinement_indicator.h>
 #include <hrcontact/core/hr_problem.h>
 
@@ -13,6 +15,27 @@
 namespace hrcontact
 {
   using namespace dealii;
+
+  namespace
+  {
+    /** The guaranteed relative error bound of a cycle: the estimator's, or
+     * for a Target error one computed beside it; -1 when neither. */
+    template <int dim>
+    double
+    relative_bound(const RefinementIndicator<dim> &estimator,
+                   const AdaptiveRefinement<dim>  &refinement,
+                   const Results<dim>             &r)
+    {
+      if (const auto bound = estimator.relative_bound())
+        return *bound;
+      if (refinement.target_error <= 0)
+        return -1;
+      BoundIndicator<dim> bound;
+      Vector<float>       indicators;
+      bound.estimate(r, indicators);
+      return *bound.relative_bound();
+    }
+  } // namespace
 
   template <int dim>
   AdaptiveRefinement<dim>
@@ -35,6 +58,13 @@ namespace hrcontact
         Timer timer;
         auto  current = std::make_unique<HRProblem<dim>>(prm, communicator);
         HRProblem<dim> &problem = *current;
+        if (cycle == 0)
+          {
+            // Refused before any solve.
+            estimator->check(problem.results().scene);
+            if (refinement.target_error > 0)
+              EquilibratedStress<dim>::check_scene(problem.results().scene);
+          }
         problem.refine_adaptively(refinement,
                                   refinement.carry_state ? previous.get() :
                                                            nullptr);
@@ -54,22 +84,39 @@ namespace hrcontact
         record.linear_solves = r.solve.linear_statistics.solves;
         record.carried_start = r.contact && !r.contact->start_origin.empty() &&
                                r.coarse_levels.empty();
+        record.relative_bound = relative_bound(*estimator, refinement, r);
         refinement.cycles.push_back(record);
         log << "  adaptive cycle " << cycle << ": " << record.cells
             << " cells, " << record.displacement_dofs << " dofs, "
             << refinement.estimator << " estimate " << std::setprecision(4)
             << record.estimate << ", " << record.linear_solves
             << (record.linear_solves == 1 ? " linear solve" : " linear solves")
-            << (record.carried_start ? " from the previous cycle's state" : "")
-            << ", " << std::setprecision(3) << record.seconds << " s"
+            << (record.carried_start ? " from the previous cycle's state" : "");
+        if (record.relative_bound >= 0)
+          log << ", error bound " << std::setprecision(3)
+              << 100 * record.relative_bound << " %";
+        log << ", " << std::setprecision(3) << record.seconds << " s"
             << std::endl;
-        const bool last = last_possible ||
-                          (refinement.maximum_dofs > 0 &&
-                           record.displacement_dofs >= refinement.maximum_dofs);
-        if (last)
+        const bool reached = refinement.target_error > 0 &&
+                             record.relative_bound <= refinement.target_error;
+        const bool most_dofs =
+          refinement.maximum_dofs > 0 &&
+          record.displacement_dofs >= refinement.maximum_dofs;
+        if (last_possible || most_dofs || reached)
           {
             problem.refine_adaptively(refinement);
-            if (!last_possible)
+            if (reached)
+              log << "  (Target error " << 100 * refinement.target_error
+                  << " % reached: the energy error is at most "
+                  << 100 * record.relative_bound << " %)" << std::endl;
+            else if (refinement.target_error > 0)
+              log << "  (Target error " << 100 * refinement.target_error
+                  << " % NOT reached: the bound is "
+                  << 100 * record.relative_bound << " % after " << cycle
+                  << (most_dofs ? " cycles at Maximum dofs)" :
+                                  " cycles, the most Adaptive cycles allows)")
+                  << std::endl;
+            else if (!last_possible)
               log << "  (Maximum dofs reached: no further cycle)" << std::endl;
             problem.output_results(log);
             if (!r.converged())

@@ -34,7 +34,15 @@ namespace hrcontact
   {
     // The largest stress dof over every process.
     sigma_max = results.stress.linfty_norm();
-    n_rows    = 4 * 2 * lower.monomials.size() + 8 * 2 * (degree + 1);
+  }
+
+  unsigned int
+  CellEquilibration::n_rows(const TriangleSplit &split) const
+  {
+    // Equilibrium per triangle, two traction components per outer and
+    // inner edge.
+    return split.n_triangles() *
+           (2 * lower.monomials.size() + 2 * 2 * (degree + 1));
   }
 
   const std::pair<FullMatrix<double>, FullMatrix<double>> &
@@ -58,13 +66,14 @@ namespace hrcontact
                                        const std::vector<double>   &weights,
                                        FullMatrix<double>          &A) const
   {
-    const TrianglePolynomials &P   = polynomials;
-    const unsigned int         n_k = points.size() / 4;
-    A.reinit(n_rows, P.n_unknowns());
+    const TrianglePolynomials &P     = polynomials;
+    const unsigned int         n_tri = split.n_triangles();
+    const unsigned int         n_k   = points.size() / n_tri;
+    A.reinit(n_rows(split), P.n_unknowns(n_tri));
     unsigned int r = 0;
     // div tau against P_{p-1} on each triangle (x: d/dx sxx + d/dy sxy; y:
     // d/dx sxy + d/dy syy).
-    for (unsigned int k = 0; k < 4; ++k)
+    for (unsigned int k = 0; k < n_tri; ++k)
       for (unsigned int i = 0; i < 2; ++i)
         for (unsigned int l = 0; l < lower.monomials.size(); ++l, ++r)
           for (unsigned int q = k * n_k; q < (k + 1) * n_k; ++q)
@@ -80,10 +89,10 @@ namespace hrcontact
     // tau n on the outer edges, its jump on the inner ones (between
     // triangles k - 1 and k), against P_p on each edge.
     const QGauss<1> edge_rule(degree + 3);
-    for (unsigned int e = 0; e < 8; ++e)
+    for (unsigned int e = 0; e < 2 * n_tri; ++e)
       {
-        const bool         outer = e < 4;
-        const unsigned int k     = e % 4;
+        const bool         outer = e < n_tri;
+        const unsigned int k     = e % n_tri;
         const Point<2>     a     = outer ? split.P[k] : split.centre;
         const Tensor<1, 2> d     = split.P[outer ? k + 1 : k] - a;
         const double       L     = d.norm();
@@ -103,13 +112,14 @@ namespace hrcontact
                     A(r, P.index(k, 2, m)) += v * n[1 - i];
                     if (!outer)
                       {
-                        A(r, P.index((k + 3) % 4, i, m)) -= v * n[i];
-                        A(r, P.index((k + 3) % 4, 2, m)) -= v * n[1 - i];
+                        const unsigned int before = (k + n_tri - 1) % n_tri;
+                        A(r, P.index(before, i, m)) -= v * n[i];
+                        A(r, P.index(before, 2, m)) -= v * n[1 - i];
                       }
                   }
               }
       }
-    Assert(r == n_rows, ExcInternalError());
+    Assert(r == A.m(), ExcInternalError());
   }
 
   const CellEquilibration::Factors &
@@ -118,9 +128,9 @@ namespace hrcontact
                              const std::vector<Point<2>> &points,
                              const std::vector<double>   &weights)
   {
-    // The shape up to translation, and the body.
-    std::vector<long long> key{(long long)body};
-    for (unsigned int k = 1; k < 4; ++k)
+    // The shape up to translation (with its hanging nodes), and the body.
+    std::vector<long long> key{(long long)body, (long long)split.n_triangles()};
+    for (unsigned int k = 1; k < split.n_triangles(); ++k)
       for (unsigned int d = 0; d < 2; ++d)
         key.push_back(
           std::llround((split.P[k][d] - split.P[0][d]) / split.h * 1e10));
@@ -128,8 +138,11 @@ namespace hrcontact
     if (const auto it = cache.find(key); it != cache.end())
       return it->second;
 
-    const TrianglePolynomials &P = polynomials;
-    const unsigned int         n = P.n_unknowns(), n_k = points.size() / 4;
+    const TrianglePolynomials &P      = polynomials;
+    const unsigned int         n_tri  = split.n_triangles();
+    const unsigned int         n      = P.n_unknowns(n_tri);
+    const unsigned int         n_k    = points.size() / n_tri;
+    const unsigned int         n_rows = this->n_rows(split);
     Factors                    F;
     constraint_matrix(split, points, weights, F.A);
     // The energy's Hessian H = sum_q w_q B_q^T S B_q.
@@ -188,10 +201,11 @@ namespace hrcontact
     const std::vector<double>                 &weights,
     Vector<double>                            &c) const
   {
-    c.reinit(n_rows);
-    unsigned int       r   = 0;
-    const auto        &f   = results.scene.body_force;
-    const unsigned int n_k = points.size() / 4;
+    c.reinit(n_rows(split));
+    unsigned int       r     = 0;
+    const auto        &f     = results.scene.body_force;
+    const unsigned int n_tri = split.n_triangles();
+    const unsigned int n_k   = points.size() / n_tri;
     // -f against P_{p-1} on each triangle.
     std::vector<Tensor<1, 2>> body(points.size());
     Vector<double>            value(2);
@@ -200,20 +214,19 @@ namespace hrcontact
         f->vector_value(points[q], value);
         body[q] = Tensor<1, 2>({value[0], value[1]});
       }
-    for (unsigned int k = 0; k < 4; ++k)
+    for (unsigned int k = 0; k < n_tri; ++k)
       for (unsigned int i = 0; i < 2; ++i)
         for (unsigned int l = 0; l < lower.monomials.size(); ++l, ++r)
           for (unsigned int q = k * n_k; f && q < (k + 1) * n_k; ++q)
             c(r) -= weights[q] * body[q][i] * lower.value(split, points[q], l);
     // The face tractions on the outer edges (the inner rows' data are 0).
     const QGauss<1> edge_rule(degree + 3);
-    for (unsigned int k = 0; k < 4; ++k)
+    for (unsigned int k = 0; k < n_tri; ++k)
       {
-        const unsigned int face =
-          cell->face(TriangleSplit::face_under_edge[k])->index();
-        const Point<2>     a = split.P[k];
-        const Tensor<1, 2> d = split.P[k + 1] - a;
-        const double       L = d.norm();
+        const unsigned int face = split.segment[k];
+        const Point<2>     a    = split.P[k];
+        const Tensor<1, 2> d    = split.P[k + 1] - a;
+        const double       L    = d.norm();
         const Tensor<1, 2> n({d[1] / L, -d[0] / L});
         for (unsigned int q = 0; q < edge_rule.size(); ++q)
           {
@@ -243,12 +256,12 @@ namespace hrcontact
     std::vector<double>   weights;
     split.rule(n_tri, points, weights);
     std::vector<SymmetricTensor<2, 2>> eps, sigma_h;
-    sampler(cell, points, split.parallelogram(), eps, sigma_h);
+    sampler(cell, split, points, eps, sigma_h);
     const Factors &F = factors(split, cell->material_id(), points, weights);
 
-    Vector<double> c, g(polynomials.n_unknowns());
+    const unsigned int n_k = points.size() / split.n_triangles();
+    Vector<double>     c, g(polynomials.n_unknowns(split.n_triangles()));
     constraint_data(cell, split, points, weights, c);
-    const unsigned int n_k = points.size() / 4;
     for (unsigned int q = 0; q < points.size(); ++q)
       {
         const double e[3] = {eps[q][0][0], eps[q][1][1], 2 * eps[q][0][1]};
@@ -260,10 +273,10 @@ namespace hrcontact
               g(polynomials.index(q / n_k, cc, m)) += v * e[cc];
           }
       }
-    x.reinit(polynomials.n_unknowns());
+    x.reinit(polynomials.n_unknowns(split.n_triangles()));
     F.M_c.vmult(x, c);
     F.M_g.vmult_add(x, g);
-    Vector<double> Ax(n_rows);
+    Vector<double> Ax(c.size());
     F.A.vmult(Ax, x);
     Ax -= c;
     if (sigma_max > 0)

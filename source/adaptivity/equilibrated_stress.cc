@@ -14,21 +14,33 @@ namespace hrcontact
   using namespace dealii;
 
   template <int dim>
+  void
+  EquilibratedStress<dim>::check_scene(const Scene<dim> &scene)
+  {
+    const std::string what =
+      "The error bound (Postprocess/Error bound, Mesh refinement/Estimator = "
+      "bound, Target error)";
+    if (dim != 2)
+      throw InputError(what + " is computed in 2D only so far.");
+    if (scene.has_changing_rows())
+      throw InputError(what + " does not cover contact yet (its tractions "
+                              "on the contact faces are not built).");
+    if (!scene.all_linear() || scene.stress_constraint)
+      throw InputError(what + " needs linear elastic bodies so far (no "
+                              "Admissible stresses, no nonlinear law).");
+  }
+
+  template <int dim>
   EquilibratedStress<dim>::EquilibratedStress(const Results<dim> &results)
     : results(results)
   {
-    const std::string what = "Postprocess/Error bound";
-    if (dim != 2)
-      throw InputError(what + " is computed in 2D only so far.");
+    check_scene(results.scene);
+    const std::string what =
+      "The error bound (Postprocess/Error bound, Mesh refinement/Estimator = "
+      "bound, Target error)";
     if (results.has_contact)
       throw InputError(what + " does not cover contact yet (its tractions "
                               "on the contact faces are not built).");
-    if (!results.scene.all_linear() || results.scene.stress_constraint)
-      throw InputError(what + " needs linear elastic bodies so far (no "
-                              "Admissible stresses, no nonlinear law).");
-    if (results.scene.refined_locally())
-      throw InputError(what + " needs a conforming mesh so far (no hanging "
-                              "nodes: no local or adaptive refinement).");
     for (const auto &row : results.system.rows)
       if (row.row_class != RowClass::free &&
           (row.row_class != RowClass::prescribed || single_dof(row) < 0))
@@ -98,7 +110,7 @@ namespace hrcontact
               std::vector<double>   weights;
               split.rule(n_tri, points, weights);
               std::vector<SymmetricTensor<2, dim>> eps, sigma_h;
-              sampler(cell, points, split.parallelogram(), eps, sigma_h);
+              sampler(cell, split, points, eps, sigma_h);
               const auto &law = results.scene.material_of(cell->material_id());
               // C eps(u_h): the law gives C^-1; invert it on the components.
               FullMatrix<double> C(3, 3);

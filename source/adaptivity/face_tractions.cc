@@ -9,12 +9,15 @@
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <deal.II/distributed/tria_base.h>
+
 #include <hrcontact/adaptivity/face_tractions.h>
 #include <hrcontact/postprocess/field_values.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 
 namespace hrcontact
@@ -83,6 +86,7 @@ namespace hrcontact
               f.value[1][c] = 2. / L * (2 * f.moment[1][c] - f.moment[0][c]);
             }
         }
+    join_halves();
   }
 
   void
@@ -101,8 +105,10 @@ namespace hrcontact
          results.spaces.dof_handler_displacement.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         {
+          // A face with a hanging node: its halves are the fine cells'.
           const unsigned int id = cell->face(f)->index();
-          if (seen[id] || !usable[cell->active_cell_index()])
+          if (seen[id] || !usable[cell->active_cell_index()] ||
+              cell->face(f)->has_children())
             continue;
           seen[id]      = true;
           Face &face    = faces[id];
@@ -159,10 +165,12 @@ namespace hrcontact
     if (f.known[0] || f.known[1])
       data = data_traction(f.boundary_id, x, normal);
     Tensor<1, 2> t;
+    const double legendre = 6 * lambda * lambda - 6 * lambda + 1;
     for (unsigned int i = 0; i < 2; ++i)
       t[i] = f.known[i] ?
                data[i] :
-               sign * ((1 - lambda) * f.value[0][i] + lambda * f.value[1][i]);
+               sign * ((1 - lambda) * f.value[0][i] + lambda * f.value[1][i] +
+                       legendre * f.bubble[i]);
     return t;
   }
 
@@ -191,6 +199,15 @@ namespace hrcontact
                         *results.spaces.fe_stress,
                         q_face,
                         update_values);
+    FESubfaceValues<2>          hsv(StaticMappingQ1<2>::mapping,
+                           hat,
+                           q_face,
+                           update_quadrature_points | update_normal_vectors |
+                             update_JxW_values);
+    FESubfaceValues<2>          ssv(StaticMappingQ1<2>::mapping,
+                           *results.spaces.fe_stress,
+                           q_face,
+                           update_values);
     std::vector<Vector<double>> s_values(
       q_cell.size(), Vector<double>(MixedSpaces<2>::n_stress_components));
     cell_residual.assign(results.triangulation().n_active_cells(), {});
@@ -221,54 +238,80 @@ namespace hrcontact
           for (unsigned int v = 0; v < 4; ++v)
             for (unsigned int c = 0; c < 2; ++c)
               scale = std::max(scale, std::abs(R[v][c]));
-          face_moments(cell, hfv, sfv);
+          face_moments(cell, hfv, sfv, hsv, ssv);
         }
   }
 
   void
   FaceTractions::face_moments(const DoFHandler<2>::active_cell_iterator &cell,
                               FEFaceValues<2>                           &hfv,
-                              FEFaceValues<2>                           &sfv)
+                              FEFaceValues<2>                           &sfv,
+                              FESubfaceValues<2>                        &hsv,
+                              FESubfaceValues<2>                        &ssv)
   {
     // Loaded faces: their data moments leave R_K; the others: the averaged
-    // sigma_h n moments, the start of the vertex problems.
+    // sigma_h n moments against the segment's hats, the start of the vertex
+    // problems. A face with a hanging node: each half from this side.
     const unsigned int          n_q = hfv.n_quadrature_points;
     std::vector<Vector<double>> s_face(
       n_q, Vector<double>(MixedSpaces<2>::n_stress_components));
-    const unsigned int k = cell->active_cell_index();
-    auto              &R = cell_residual[k];
+    const unsigned int k        = cell->active_cell_index();
+    auto              &R        = cell_residual[k];
+    const auto        &vertices = results.triangulation().get_vertices();
+    const auto         add      = [&](const unsigned int     fn,
+                         const unsigned int     id,
+                         const FEValuesBase<2> &h,
+                         const FEValuesBase<2> &sv) {
+      Face &face = faces[id];
+      sv.get_function_values(results.stress, s_face);
+      const double side =
+        (face.boundary ? 1. : 0.5) * (face.owner == k ? 1. : -1.);
+      const Point<2> &a = vertices[face.vertices[0]],
+                     &b = vertices[face.vertices[1]];
+      for (unsigned int q = 0; q < n_q; ++q)
+        {
+          const Tensor<1, 2> n  = h.normal_vector(q);
+          const Tensor<1, 2> sn = stress_tensor<2>(s_face[q]) * n;
+          const double       lambda =
+            (h.quadrature_point(q) - a) * (b - a) / (b - a).norm_square();
+          const std::array<double, 2> hat{{1 - lambda, lambda}};
+          const Tensor<1, 2>          t =
+            face.boundary ?
+                                    data_traction(face.boundary_id, h.quadrature_point(q), n) :
+                                    Tensor<1, 2>();
+          for (unsigned int fa = 0; fa < 2; ++fa)
+            {
+              const double phi = hat[fa] * h.JxW(q);
+              // A loaded face is a whole face of this cell: its hat is the
+              // cell's.
+              const unsigned int v =
+                GeometryInfo<2>::face_to_cell_vertices(fn, 0);
+              const unsigned int cv =
+                cell->vertex_index(v) == face.vertices[fa] ?
+                               v :
+                               GeometryInfo<2>::face_to_cell_vertices(fn, 1);
+              for (unsigned int c = 0; c < 2; ++c)
+                if (face.known[c])
+                  R[cv][c] -= t[c] * phi;
+                else
+                  average[id][fa][c] += side * sn[c] * phi;
+            }
+        }
+    };
     for (const unsigned int fn : cell->face_indices())
-      {
-        const unsigned int id   = cell->face(fn)->index();
-        Face              &face = faces[id];
-        hfv.reinit(Triangulation<2>::active_cell_iterator(cell), fn);
-        sfv.reinit(cell, fn);
-        sfv.get_function_values(results.stress, s_face);
-        const double side =
-          (face.boundary ? 1. : 0.5) * (face.owner == k ? 1. : -1.);
-        for (unsigned int q = 0; q < n_q; ++q)
+      if (cell->face(fn)->has_children())
+        for (unsigned int sf = 0; sf < 2; ++sf)
           {
-            const Tensor<1, 2> n  = hfv.normal_vector(q);
-            const Tensor<1, 2> sn = stress_tensor<2>(s_face[q]) * n;
-            const Tensor<1, 2> t =
-              face.boundary ?
-                data_traction(face.boundary_id, hfv.quadrature_point(q), n) :
-                Tensor<1, 2>();
-            for (unsigned int a = 0; a < 2; ++a)
-              {
-                const unsigned int v =
-                  GeometryInfo<2>::face_to_cell_vertices(fn, a);
-                const unsigned int fa =
-                  (cell->vertex_index(v) == face.vertices[0]) ? 0 : 1;
-                const double phi = hfv.shape_value(v, q) * hfv.JxW(q);
-                for (unsigned int c = 0; c < 2; ++c)
-                  if (face.known[c])
-                    R[v][c] -= t[c] * phi;
-                  else
-                    average[id][fa][c] += side * sn[c] * phi;
-              }
+            hsv.reinit(Triangulation<2>::active_cell_iterator(cell), fn, sf);
+            ssv.reinit(cell, fn, sf);
+            add(fn, cell->face(fn)->child(sf)->index(), hsv, ssv);
           }
-      }
+      else
+        {
+          hfv.reinit(Triangulation<2>::active_cell_iterator(cell), fn);
+          sfv.reinit(cell, fn);
+          add(fn, cell->face(fn)->index(), hfv, sfv);
+        }
   }
 
   const FullMatrix<double> &
@@ -302,98 +345,240 @@ namespace hrcontact
     return it->second;
   }
 
+  unsigned int
+  FaceTractions::segment_through(
+    const TriaIterator<TriaAccessor<1, 2, 2>> &face,
+    const unsigned int                         vertex)
+  {
+    if (!face->has_children())
+      return face->index();
+    return face->child(0)->vertex_index(0) == vertex ||
+               face->child(0)->vertex_index(1) == vertex ?
+             face->child(0)->index() :
+             face->child(1)->index();
+  }
+
   void
   FaceTractions::solve_vertex_problems()
   {
     const auto &tria         = results.triangulation();
     const auto  vertex_cells = GridTools::vertex_to_cell_map(tria);
     residual                 = 0;
+    // The cells with vertex vi (the map also lists the coarse cells on
+    // whose faces vi hangs).
+    const auto patch = [&](const unsigned int vi) {
+      std::vector<Triangulation<2>::active_cell_iterator> cells;
+      for (const auto &c : vertex_cells[vi])
+        for (const unsigned int v : c->vertex_indices())
+          if (c->vertex_index(v) == vi)
+            cells.push_back(c);
+      return cells;
+    };
+    // First the hanging nodes: those on this process's own coarse cells'
+    // faces or of its own fine cells (it holds their three cells).
+    std::vector<bool> hanging(tria.n_vertices(), false);
+    for (const auto &cell : tria.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->has_children())
+            {
+              const unsigned int h = cell->face(f)->child(0)->vertex_index(1);
+              hanging[h]           = true;
+              const auto cells     = patch(h);
+              bool       own =
+                results.partition.owned_cell[cell->active_cell_index()];
+              for (const auto &c : cells)
+                own |= results.partition.owned_cell[c->active_cell_index()];
+              if (own)
+                solve_vertex(h, cells, true);
+            }
+    exchange_from_coarse_cells(hanging_moment);
     for (unsigned int vi = 0; vi < vertex_cells.size(); ++vi)
-      {
-        // The cells around the vertex (with its index in each) and their
-        // faces through it.
-        const std::vector<Triangulation<2>::active_cell_iterator> cells(
-          vertex_cells[vi].begin(), vertex_cells[vi].end());
-        // Only the vertices of this process's own cells (whose patches it
-        // holds whole).
-        bool own = false, whole = true;
-        for (const auto &c : cells)
-          {
+      if (!hanging[vi])
+        {
+          // Only the vertices of this process's own cells (whose patches it
+          // holds whole).
+          const auto cells = patch(vi);
+          bool       own   = false;
+          for (const auto &c : cells)
             own |= results.partition.owned_cell[c->active_cell_index()];
-            whole &= usable[c->active_cell_index()];
-          }
-        if (!own || cells.empty())
-          continue;
-        AssertThrow(whole,
-                    ExcMessage("Error bound: a vertex patch of an own cell "
-                               "is not held whole by this process."));
-        std::vector<unsigned int>              local;
-        std::vector<std::vector<unsigned int>> cell_faces(cells.size());
-        for (unsigned int i = 0; i < cells.size(); ++i)
-          {
-            for (unsigned int v = 0; v < 4; ++v)
-              if (cells[i]->vertex_index(v) == vi)
-                local.push_back(v);
-            for (const unsigned int fn : cells[i]->face_indices())
-              if (cells[i]->face(fn)->vertex_index(0) == vi ||
-                  cells[i]->face(fn)->vertex_index(1) == vi)
-                cell_faces[i].push_back(cells[i]->face(fn)->index());
-          }
-        for (unsigned int c = 0; c < 2; ++c)
-          {
-            std::vector<unsigned int> unknown;
-            for (const auto &fs : cell_faces)
-              for (const unsigned int id : fs)
-                if (!faces[id].known[c] &&
-                    std::find(unknown.begin(), unknown.end(), id) ==
-                      unknown.end())
-                  unknown.push_back(id);
-            const unsigned int n = cells.size(), m = unknown.size();
-            Vector<double>     r(n), b0(m), b(m);
-            FullMatrix<double> A(n, std::max(m, 1u));
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                r(i) =
-                  cell_residual[cells[i]->active_cell_index()][local[i]][c];
-                for (unsigned int j = 0; j < m; ++j)
-                  if (std::find(cell_faces[i].begin(),
-                                cell_faces[i].end(),
-                                unknown[j]) != cell_faces[i].end())
-                    A(i, j) =
-                      faces[unknown[j]].owner == cells[i]->active_cell_index() ?
-                        1. :
-                        -1.;
-              }
-            for (unsigned int j = 0; j < m; ++j)
-              b0(j) = average[unknown[j]]
-                             [faces[unknown[j]].vertices[0] == vi ? 0 : 1][c];
-            if (m > 0)
-              {
-                // b = b0 + A^+ (R - A b0); r: what is left, R - A b.
-                Vector<double> Ab0(n);
-                A.vmult(Ab0, b0);
-                r -= Ab0;
-                pseudo_inverse(A, m).vmult(b, r);
-                b += b0;
-                r = 0;
-                for (unsigned int i = 0; i < n; ++i)
-                  r(i) =
-                    cell_residual[cells[i]->active_cell_index()][local[i]][c];
-                Vector<double> Ab(n);
-                A.vmult(Ab, b);
-                r -= Ab;
-              }
-            residual = std::max(residual, r.linfty_norm());
-            for (unsigned int j = 0; j < m; ++j)
-              {
-                Face &face = faces[unknown[j]];
-                face.moment[face.vertices[0] == vi ? 0 : 1][c] = b(j);
-              }
-          }
-      }
+          if (own)
+            solve_vertex(vi, cells, false);
+        }
     const MPI_Comm comm = results.partition.communicator;
     scale               = Utilities::MPI::max(scale, comm);
     residual            = Utilities::MPI::max(residual, comm);
     residual            = scale > 0 ? residual / scale : 0;
+  }
+
+  void
+  FaceTractions::solve_vertex(
+    const unsigned int                                         vi,
+    const std::vector<Triangulation<2>::active_cell_iterator> &cells,
+    const bool                                                 hanging)
+  {
+    for (const auto &c : cells)
+      AssertThrow(usable[c->active_cell_index()],
+                  ExcMessage("Error bound: a vertex patch of an own cell "
+                             "is not held whole by this process."));
+    // The vertex's index in each cell, the cells' segments through it, and
+    // what the hanging nodes' moments already give each row (a coarse
+    // cell's face through vi that a hanging node splits: half of that
+    // node's moments on both halves, eq. of the conforming hat).
+    const unsigned int                     n = cells.size();
+    std::vector<unsigned int>              local(n);
+    std::vector<std::vector<unsigned int>> cell_faces(n);
+    std::vector<std::array<double, 2>>     known(n, {{0., 0.}});
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        for (unsigned int v = 0; v < 4; ++v)
+          if (cells[i]->vertex_index(v) == vi)
+            local[i] = v;
+        for (const unsigned int fn : cells[i]->face_indices())
+          {
+            const auto face = cells[i]->face(fn);
+            if (face->vertex_index(0) != vi && face->vertex_index(1) != vi)
+              continue;
+            const unsigned int id = segment_through(face, vi);
+            cell_faces[i].push_back(id);
+            if (!face->has_children())
+              continue;
+            const double sign =
+              faces[id].owner == cells[i]->active_cell_index() ? 1. : -1.;
+            for (unsigned int half = 0; half < 2; ++half)
+              {
+                const auto it = hanging_moment.find(face->child(half)->index());
+                AssertThrow(it != hanging_moment.end(),
+                            ExcMessage("Error bound: a hanging node's "
+                                       "moments are missing."));
+                for (unsigned int c = 0; c < 2; ++c)
+                  known[i][c] += sign * 0.5 * it->second[c];
+              }
+          }
+      }
+    for (unsigned int c = 0; c < 2; ++c)
+      {
+        std::vector<unsigned int> unknown;
+        for (const auto &fs : cell_faces)
+          for (const unsigned int id : fs)
+            if (!faces[id].known[c] &&
+                std::find(unknown.begin(), unknown.end(), id) == unknown.end())
+              unknown.push_back(id);
+        const unsigned int m = unknown.size();
+        Vector<double>     R(n), b0(m), b(m);
+        FullMatrix<double> A(n, std::max(m, 1u));
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            R(i) = cell_residual[cells[i]->active_cell_index()][local[i]][c] -
+                   known[i][c];
+            for (unsigned int j = 0; j < m; ++j)
+              if (std::find(cell_faces[i].begin(),
+                            cell_faces[i].end(),
+                            unknown[j]) != cell_faces[i].end())
+                A(i, j) =
+                  faces[unknown[j]].owner == cells[i]->active_cell_index() ?
+                    1. :
+                    -1.;
+          }
+        for (unsigned int j = 0; j < m; ++j)
+          b0(j) =
+            average[unknown[j]][faces[unknown[j]].vertices[0] == vi ? 0 : 1][c];
+        // b = b0 + A^+ (R - A b0); what is left: R - A b.
+        Vector<double> r(R);
+        if (m > 0)
+          {
+            Vector<double> Ab(n);
+            A.vmult(Ab, b0);
+            r -= Ab;
+            pseudo_inverse(A, m).vmult(b, r);
+            b += b0;
+            A.vmult(Ab, b);
+            r = R;
+            r -= Ab;
+          }
+        residual = std::max(residual, r.linfty_norm());
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            Face              &face = faces[unknown[j]];
+            const unsigned int end  = face.vertices[0] == vi ? 0 : 1;
+            face.moment[end][c]     = b(j);
+            if (hanging)
+              hanging_moment[unknown[j]][c] = b(j);
+          }
+      }
+  }
+
+  void
+  FaceTractions::join_halves()
+  {
+    // On own coarse cells: the mean of the halves' linear tractions at the
+    // hanging node (the halves' owners, the fine cells, share the normal).
+    std::map<unsigned int, std::array<double, 2>> bubble;
+    for (const auto &cell : results.triangulation().active_cell_iterators())
+      if (results.partition.owned_cell[cell->active_cell_index()])
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->has_children())
+            {
+              const unsigned int h = cell->face(f)->child(0)->vertex_index(1);
+              std::array<std::array<double, 2>, 2> at_h;
+              for (unsigned int half = 0; half < 2; ++half)
+                {
+                  const Face &face = faces[cell->face(f)->child(half)->index()];
+                  at_h[half]       = face.value[face.vertices[0] == h ? 0 : 1];
+                }
+              for (unsigned int half = 0; half < 2; ++half)
+                for (unsigned int c = 0; c < 2; ++c)
+                  bubble[cell->face(f)->child(half)->index()][c] =
+                    0.5 * (at_h[1 - half][c] - at_h[half][c]);
+            }
+    exchange_from_coarse_cells(bubble);
+    for (const auto &[line, b] : bubble)
+      faces[line].bubble = b;
+  }
+
+  void
+  FaceTractions::exchange_from_coarse_cells(
+    std::map<unsigned int, std::array<double, 2>> &values) const
+  {
+    using Tria       = parallel::TriangulationBase<2>;
+    const auto *tria = dynamic_cast<const Tria *>(&results.triangulation());
+    if (tria == nullptr || tria->n_global_active_cells() == 0 ||
+        Utilities::MPI::n_mpi_processes(results.partition.communicator) == 1)
+      return;
+    using Cell = Triangulation<2>::active_cell_iterator;
+    // Per refined face of an owned cell: its number and its halves'
+    // moments.
+    GridTools::exchange_cell_data_to_ghosts<std::vector<double>,
+                                            Triangulation<2>>(
+      results.triangulation(),
+      [&](const Cell &cell) -> std::optional<std::vector<double>> {
+        std::vector<double> data;
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->has_children())
+            {
+              data.push_back(f);
+              for (unsigned int half = 0; half < 2; ++half)
+                for (unsigned int c = 0; c < 2; ++c)
+                  data.push_back(
+                    values[cell->face(f)->child(half)->index()][c]);
+            }
+        if (data.empty())
+          return {};
+        return data;
+      },
+      [&](const Cell &cell, const std::vector<double> &data) {
+        for (unsigned int i = 0; i + 5 <= data.size(); i += 5)
+          {
+            const auto face = cell->face(static_cast<unsigned int>(data[i]));
+            // Where the fine side is artificial here the face is whole: no
+            // problem here needs its halves.
+            if (!face->has_children())
+              continue;
+            for (unsigned int half = 0; half < 2; ++half)
+              for (unsigned int c = 0; c < 2; ++c)
+                values[face->child(half)->index()][c] =
+                  data[i + 1 + 2 * half + c];
+          }
+      });
   }
 } // namespace hrcontact

@@ -41,18 +41,45 @@ namespace hrcontact
     const Triangulation<2>::active_cell_iterator &cell)
   {
     for (unsigned int k = 0; k < 4; ++k)
+      centre += cell->vertex(corner[k]) / 4.;
+    h = cell->diameter();
+    for (unsigned int k = 0; k < 4; ++k)
       {
-        P[k] = cell->vertex(corner[k]);
-        centre += P[k] / 4.;
+        const unsigned int f    = face_under_edge[k];
+        const auto         face = cell->face(f);
+        P.push_back(cell->vertex(corner[k]));
+        if (!face->has_children())
+          {
+            segment.push_back(face->index());
+            continue;
+          }
+        // The child that starts at this corner first (a line's direction
+        // need not follow the cell's).
+        split_faces |= 1u << f;
+        const unsigned int first =
+          face->child(0)->vertex_index(0) == cell->vertex_index(corner[k]) ||
+              face->child(0)->vertex_index(1) == cell->vertex_index(corner[k]) ?
+            0 :
+            1;
+        segment.push_back(face->child(first)->index());
+        P.push_back(face->child(0)->vertex(1));
+        segment.push_back(face->child(1 - first)->index());
       }
-    P[4] = P[0];
-    h    = cell->diameter();
+    P.push_back(P[0]);
   }
 
   bool
   TriangleSplit::parallelogram() const
   {
-    return (P[2] - P[3] - (P[1] - P[0])).norm() <= 1e-12 * h;
+    // The corners' differences, whatever hanging nodes lie between.
+    std::array<Point<2>, 4> c;
+    for (unsigned int k = 0, i = 0; k < 4; ++k, ++i)
+      {
+        c[k] = P[i];
+        if (split_faces & (1u << face_under_edge[k]))
+          ++i;
+      }
+    return (c[2] - c[3] - (c[1] - c[0])).norm() <= 1e-12 * h;
   }
 
   void
@@ -61,7 +88,7 @@ namespace hrcontact
                       std::vector<double>   &weights) const
   {
     const QGauss<1> g(n);
-    for (unsigned int k = 0; k < 4; ++k)
+    for (unsigned int k = 0; k < n_triangles(); ++k)
       {
         const Point<2> &a = centre, &b = P[k], &c = P[k + 1];
         const double    area2 = std::abs((b[0] - a[0]) * (c[1] - a[1]) -
@@ -160,11 +187,12 @@ namespace hrcontact
 
   void
   CellSampler::operator()(const DoFHandler<2>::active_cell_iterator &cell,
+                          const TriangleSplit                       &split,
                           const std::vector<Point<2>>               &points,
-                          const bool                          parallelogram,
-                          std::vector<SymmetricTensor<2, 2>> &eps,
-                          std::vector<SymmetricTensor<2, 2>> &sigma)
+                          std::vector<SymmetricTensor<2, 2>>        &eps,
+                          std::vector<SymmetricTensor<2, 2>>        &sigma)
   {
+    const bool parallelogram = split.parallelogram();
     cell->get_dof_indices(u_dofs);
     const DoFHandler<2>::active_cell_iterator s_cell(
       &results.triangulation(),
@@ -184,7 +212,7 @@ namespace hrcontact
     const Table       *table = &own;
     if (parallelogram)
       {
-        Table &t = tables[points.size()];
+        Table &t = tables[{points.size(), split.split_faces}];
         if (t.unit.empty())
           {
             for (const Point<2> &x : points)

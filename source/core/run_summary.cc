@@ -70,6 +70,22 @@ namespace hrcontact
     summary.add("adaptive_cycle_linear_solves", solves.str());
     summary.add("adaptive_cycle_carried_start", carried.str());
     summary.add("adaptive_total_seconds", total);
+    const AdaptiveRefinement<dim> &adaptive = r.scene.adaptive;
+    if (cycles.back().relative_bound >= 0)
+      {
+        std::ostringstream bounds;
+        for (unsigned int k = 0; k < cycles.size(); ++k)
+          bounds << (k ? ", " : "") << std::setprecision(6)
+                 << cycles[k].relative_bound;
+        summary.add("adaptive_cycle_error_bounds", bounds.str());
+      }
+    if (adaptive.target_error > 0)
+      {
+        summary.add("target_error", adaptive.target_error);
+        summary.add("target_error_reached",
+                    cycles.back().relative_bound <= adaptive.target_error ? 1 :
+                                                                            0);
+      }
   }
 
   template <int dim>

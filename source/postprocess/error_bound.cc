@@ -26,8 +26,8 @@ namespace hrcontact
       "summary.txt gets error_bound (absolute), error_bound_relative (to the "
       "energy of the computed stresses) and how exactly the reconstruction "
       "is admissible; with a Reference stress also the true energy error "
-      "and the effectivity index. So far 2D, conforming meshes (no local "
-      "or adaptive refinement), linear elastic bodies without contact.");
+      "and the effectivity index. So far 2D (hanging nodes included), "
+      "linear elastic bodies without contact.");
     prm.leave_subsection();
   }
 

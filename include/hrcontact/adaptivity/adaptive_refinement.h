@@ -32,6 +32,9 @@ namespace hrcontact
     double       seconds = 0;
     /** sqrt(sum of the squared cell indicators). */
     double estimate = 0;
+    /** The guaranteed relative error bound (Estimator = bound or a Target
+     * error), or -1. */
+    double relative_bound = -1;
     /** The linear solves of the contact iteration on this cycle's mesh
      * (nested iteration's coarser levels not counted). */
     unsigned int linear_solves = 0;
@@ -72,6 +75,9 @@ namespace hrcontact
     bool carry_state = true;
     /** 0: no ceiling. */
     unsigned int maximum_dofs = 0;
+    /** Stop once the guaranteed relative error bound is at or below this
+     * (0: no target). */
+    double target_error = 0;
 
     /** The steps of the cycles so far, replayed by apply(). */
     std::vector<RefinementStep> history;

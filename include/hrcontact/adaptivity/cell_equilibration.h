@@ -14,9 +14,9 @@ namespace hrcontact
 {
   /**
    * Step 2 of EquilibratedStress: on each cell, split at its centre into
-   * four triangles, the symmetric stress, polynomial of `degree` on each,
-   * with div tau + f = 0 on each triangle (against the polynomials of degree
-   * p - 1), tau n equal to the FaceTractions on the cell's faces and
+   * triangles (TriangleSplit), the symmetric stress, polynomial of `degree` on
+   * each, with div tau + f = 0 on each triangle (against the polynomials of
+   * degree p - 1), tau n equal to the FaceTractions on the cell's faces and
    * continuous across the inner edges (against the polynomials of degree p
    * on each edge), that minimises the cell's share of the bound |tau - C
    * eps(u_h)|_{C^-1}. The split is why one exists: at a corner two faces
@@ -81,9 +81,11 @@ namespace hrcontact
     std::map<std::vector<long long>, Factors> cache;
     std::map<dealii::types::material_id,
              std::pair<dealii::FullMatrix<double>, dealii::FullMatrix<double>>>
-                 compliance;
-    double       sigma_max = 0;
-    unsigned int n_rows    = 0;
+           compliance;
+    double sigma_max = 0;
+    /** The constraints' rows on a split. */
+    unsigned int
+    n_rows(const TriangleSplit &split) const;
   };
 } // namespace hrcontact
 

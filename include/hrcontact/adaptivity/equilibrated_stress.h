@@ -33,7 +33,7 @@ namespace hrcontact
    *
    * Exact for body forces of degree < CellEquilibration::degree and
    * tractions of degree <= CellEquilibration::degree on each face; other
-   * data are projected. So far: 2D, conforming meshes, linear
+   * data are projected. So far: 2D (with hanging nodes), linear
    * elastic bodies, supports by prescribed displacements and point supports
    * (no contact rows); other scenes are refused by name.
    */
@@ -43,6 +43,11 @@ namespace hrcontact
   public:
     /** Refuses (InputError) what the construction does not cover. */
     explicit EquilibratedStress(const Results<dim> &results);
+
+    /** What can be refused before the solve: 3D, contact, nonlinear or
+     * cone-constrained bodies (InputError naming it). */
+    static void
+    check_scene(const Scene<dim> &scene);
 
     /** Both steps. */
     void

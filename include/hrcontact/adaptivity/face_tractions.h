@@ -33,6 +33,27 @@ namespace hrcontact
    * (b = b0 + A^+ (R - A b0)). The hat functions sum to one and reproduce
    * linear fields, so each cell's tractions balance its body force in force
    * and moment.
+   *
+   * Hanging nodes: the faces are the mesh's active lines, so a coarse cell
+   * beside refined ones sees two linear tractions on such a face. The
+   * conforming hat of a parent vertex a is, on that face, a's hat plus half
+   * the hanging node's, so the vertex problems of a hanging node h (its two
+   * fine cells, three faces: solvable for any residuals) are solved first,
+   * and their moments on the two halves of the coarse face enter the coarse
+   * cell's rows of a and b as data. The rows of every parent problem still
+   * sum to the HR equation of its conforming test function, so each stays
+   * solvable and the coarse cell balances too. On several processes the
+   * owner of the coarse cell solves its hanging nodes and sends the moments
+   * to its ghosts (a parent's patch holds the coarse cell, not always both
+   * fine cells).
+   *
+   * The two halves' linear tractions need not meet at the hanging node, and
+   * a kink there that is not along the coarse cell's inner edge to it is
+   * one no piecewise-polynomial symmetric stress of the coarse cell's split
+   * can take. So each half gets the Legendre quadratic 6 s^2 - 6 s + 1
+   * times the amount that makes the halves meet at their mean: it is
+   * orthogonal to the linear functions, so no moment, force or moment of a
+   * cell changes.
    */
   class FaceTractions
   {
@@ -45,9 +66,12 @@ namespace hrcontact
       unsigned int                         owner = 0;
       std::array<unsigned int, 2>          vertices{};
       std::array<std::array<double, 2>, 2> moment{}, value{};
-      std::array<bool, 2>                  known{};
-      bool                                 boundary    = false;
-      dealii::types::boundary_id           boundary_id = 0;
+      /** The Legendre quadratic's coefficient per component (halves of a
+       * face with a hanging node). */
+      std::array<double, 2>      bubble{};
+      std::array<bool, 2>        known{};
+      bool                       boundary    = false;
+      dealii::types::boundary_id boundary_id = 0;
     };
 
     /** Computes the tractions of @p results (2D, serial, conforming). */
@@ -88,12 +112,40 @@ namespace hrcontact
     classify_faces();
     void
     cell_residuals();
+    /** One cell's face moments (sub-face values for the halves of a face
+     * with a hanging node). */
     void
     face_moments(const dealii::DoFHandler<2>::active_cell_iterator &cell,
                  dealii::FEFaceValues<2>                           &hat_values,
-                 dealii::FEFaceValues<2> &stress_values);
+                 dealii::FEFaceValues<2>    &stress_values,
+                 dealii::FESubfaceValues<2> &hat_subface_values,
+                 dealii::FESubfaceValues<2> &stress_subface_values);
     void
     solve_vertex_problems();
+    /** The vertex problems of vertex @p vertex on @p cells (those with it as
+     * a vertex), both components; a @p hanging node's moments are kept for
+     * its parents' problems. */
+    void
+    solve_vertex(
+      const unsigned int                                                 vertex,
+      const std::vector<dealii::Triangulation<2>::active_cell_iterator> &cells,
+      const bool hanging);
+    /** The segment (an active line) of @p face through @p vertex. */
+    static unsigned int
+    segment_through(
+      const dealii::TriaIterator<dealii::TriaAccessor<1, 2, 2>> &face,
+      const unsigned int                                         vertex);
+    /** Sends the owners' values of @p data (per half of a refined face, by
+     * line index) to the ghosts of their coarse cells (several processes). */
+    void
+    exchange_from_coarse_cells(
+      std::map<unsigned int, std::array<double, 2>> &data) const;
+    /** The halves' Legendre quadratics (after the vertex values). */
+    void
+    join_halves();
+    /** Per half of a refined face (by line index): the moment against the
+     * hanging node's hat, by component. */
+    std::map<unsigned int, std::array<double, 2>> hanging_moment;
     /** A^+ of a vertex problem's +-1 matrix (its first m columns). */
     const dealii::FullMatrix<double> &
     pseudo_inverse(const dealii::FullMatrix<double> &A, const unsigned int m);

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,6 +35,23 @@ namespace hrcontact
     virtual void
     estimate(const Results<dim>    &results,
              dealii::Vector<float> &indicators) const = 0;
+
+    /** Refuses (InputError) a scene the indicator cannot estimate, before
+     * the first solve; nothing by default. */
+    virtual void
+    check(const Scene<dim> &) const
+    {}
+
+    /**
+     * A guaranteed upper bound of the last estimate's energy error relative
+     * to the energy of the computed stresses, where the indicator gives one
+     * (Mesh refinement/Target error); empty otherwise.
+     */
+    virtual std::optional<double>
+    relative_bound() const
+    {
+      return std::nullopt;
+    }
   };
 
   /** The name -> factory registry of RefinementIndicator. */

@@ -23,11 +23,14 @@ namespace hrcontact
   component_compliance(const MaterialLaw<2> &law);
 
   /**
-   * A 2D cell split at its centre into four triangles, on which the
-   * equilibrated stress is a polynomial per triangle (EquilibratedStress):
-   * the corners counter-clockwise (the fifth repeats the first), the centre,
-   * the length that scales the local coordinates, and a rule on the
-   * triangles.
+   * A 2D cell split at its centre into triangles, on which the equilibrated
+   * stress is a polynomial per triangle (EquilibratedStress): one triangle
+   * per boundary segment, i.e. four, plus one for each face whose neighbour
+   * is refined (its hanging node splits the face into the neighbours' two
+   * faces, whose tractions differ). The boundary points counter-clockwise
+   * (the last repeats the first), the segment (an active line of the mesh)
+   * under each edge, the centre, the length that scales the local
+   * coordinates, and a rule on the triangles.
    */
   struct TriangleSplit
   {
@@ -35,13 +38,24 @@ namespace hrcontact
       const dealii::Triangulation<2>::active_cell_iterator &cell);
 
     /** The cell's vertices counter-clockwise (deal.II's 0, 1, 3, 2), and
-     * the cell's face under the edge P_k P_{k+1}. */
+     * the cell's face between corner k and corner k + 1. */
     static constexpr unsigned int corner[4]          = {0, 1, 3, 2};
     static constexpr unsigned int face_under_edge[4] = {2, 1, 3, 0};
 
-    std::array<dealii::Point<2>, 5> P;
-    dealii::Point<2>                centre;
-    double                          h = 1;
+    std::vector<dealii::Point<2>> P;
+    /** The line index of the segment under edge P_k P_{k+1}. */
+    std::vector<unsigned int> segment;
+    /** Bit f: face f is split by a hanging node. */
+    unsigned int     split_faces = 0;
+    dealii::Point<2> centre;
+    double           h = 1;
+
+    /** The number of triangles (and of boundary segments). */
+    unsigned int
+    n_triangles() const
+    {
+      return segment.size();
+    }
 
     /** Whether the opposite sides are parallel (the Q1 map affine). */
     bool
@@ -56,7 +70,7 @@ namespace hrcontact
   };
 
   /**
-   * Symmetric polynomial stresses on the four triangles: per triangle and
+   * Symmetric polynomial stresses on the triangles of a split: per triangle and
    * component (xx, yy, xy) the monomials xi^a eta^b, a + b <= p, of the
    * local coordinates xi = (x - centre) / h.
    */
@@ -76,9 +90,9 @@ namespace hrcontact
       return (k * 3 + c) * monomials.size() + m;
     }
     unsigned int
-    n_unknowns() const
+    n_unknowns(const unsigned int n_triangles) const
     {
-      return 12 * monomials.size();
+      return 3 * n_triangles * monomials.size();
     }
     double
     value(const TriangleSplit    &split,
@@ -111,8 +125,8 @@ namespace hrcontact
 
     void
     operator()(const dealii::DoFHandler<2>::active_cell_iterator &cell,
+               const TriangleSplit                               &split,
                const std::vector<dealii::Point<2>>               &points,
-               const bool                                         parallelogram,
                std::vector<dealii::SymmetricTensor<2, 2>>        &eps,
                std::vector<dealii::SymmetricTensor<2, 2>>        &sigma);
 
@@ -131,8 +145,9 @@ namespace hrcontact
     std::vector<dealii::types::global_dof_index> u_dofs, s_dofs;
     std::vector<unsigned int>                    u_component;
     std::vector<dealii::SymmetricTensor<2, 2>>   s_tensor;
-    std::map<unsigned int, Table>                tables;
-    Table                                        own;
+    /** Per number of points and split faces. */
+    std::map<std::pair<unsigned int, unsigned int>, Table> tables;
+    Table                                                  own;
   };
 } // namespace hrcontact
 
