@@ -31,6 +31,8 @@ main()
                                  "adaptive-fraction",
                                  "adaptive-fractions-sum",
                                  "adaptive-estimator",
+                                 "adaptive-bound-contact",
+                                 "adaptive-target-error",
                                  "adaptive-null-space",
                                  "bodies-overlap",
                                  "pair-out-of-reach",
