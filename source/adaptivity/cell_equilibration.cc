@@ -128,13 +128,13 @@ namespace hrcontact
                              const std::vector<Point<2>> &points,
                              const std::vector<double>   &weights)
   {
-    // The shape up to translation (with its hanging nodes), and the body.
+    // The shape up to translation and scale (with its hanging nodes), and
+    // the body.
     std::vector<long long> key{(long long)body, (long long)split.n_triangles()};
     for (unsigned int k = 1; k < split.n_triangles(); ++k)
       for (unsigned int d = 0; d < 2; ++d)
         key.push_back(
           std::llround((split.P[k][d] - split.P[0][d]) / split.h * 1e10));
-    key.push_back(std::llround(std::log(split.h) * 1e10));
     if (const auto it = cache.find(key); it != cache.end())
       return it->second;
 
@@ -144,6 +144,18 @@ namespace hrcontact
     const unsigned int         n_k    = points.size() / n_tri;
     const unsigned int         n_rows = this->n_rows(split);
     Factors                    F;
+    F.h = split.h;
+    // The monomials at the rule's points: the same local coordinates on
+    // every similar cell.
+    F.values.reinit(points.size(), P.monomials.size());
+    F.lower_values.reinit(points.size(), lower.monomials.size());
+    for (unsigned int q = 0; q < points.size(); ++q)
+      {
+        for (unsigned int m = 0; m < P.monomials.size(); ++m)
+          F.values(q, m) = P.value(split, points[q], m);
+        for (unsigned int l = 0; l < lower.monomials.size(); ++l)
+          F.lower_values(q, l) = lower.value(split, points[q], l);
+      }
     constraint_matrix(split, points, weights, F.A);
     // The energy's Hessian H = sum_q w_q B_q^T S B_q.
     const FullMatrix<double> &S = compliances(body).first;
@@ -152,8 +164,7 @@ namespace hrcontact
       for (unsigned int m1 = 0; m1 < P.monomials.size(); ++m1)
         for (unsigned int m2 = 0; m2 < P.monomials.size(); ++m2)
           {
-            const double v = weights[q] * P.value(split, points[q], m1) *
-                             P.value(split, points[q], m2);
+            const double v = weights[q] * F.values(q, m1) * F.values(q, m2);
             for (unsigned int c1 = 0; c1 < 3; ++c1)
               for (unsigned int c2 = 0; c2 < 3; ++c2)
                 H(P.index(q / n_k, c1, m1), P.index(q / n_k, c2, m2)) +=
@@ -190,6 +201,37 @@ namespace hrcontact
     F.M_g.mmult(MHP, HP);
     F.M_c = pinv;
     F.M_c.add(-1., MHP);
+    // A x - c = (A A^+ - I) c = -U_0 U_0^T c, U_0 the left null space: what
+    // of the data no admissible field can meet.
+    F.left_null.reinit(n_rows, n_rows - rank);
+    for (unsigned int l = rank; l < n_rows; ++l)
+      for (unsigned int j = 0; j < n_rows; ++j)
+        F.left_null(j, l - rank) = U(j, l);
+    // On a parallelogram eps(u_h) is linear, e = sum_a e_a b_a with b = (1,
+    // xi, eta): g = G e_a and M_g g = (M_g G) e_a; e_a from three points.
+    if (split.parallelogram())
+      {
+        FullMatrix<double> G(n, 9), B(3, 3);
+        const auto basis = [&](const unsigned int q, const unsigned int a) {
+          const Tensor<1, 2> xi = (points[q] - split.centre) / split.h;
+          return a == 0 ? 1. : xi[a - 1];
+        };
+        for (unsigned int q = 0; q < points.size(); ++q)
+          for (unsigned int m = 0; m < P.monomials.size(); ++m)
+            for (unsigned int cc = 0; cc < 3; ++cc)
+              for (unsigned int a = 0; a < 3; ++a)
+                G(P.index(q / n_k, cc, m), 3 * cc + a) +=
+                  weights[q] * F.values(q, m) * basis(q, a);
+        F.M_g_G.reinit(n, 9);
+        F.M_g.mmult(F.M_g_G, G);
+        const unsigned int n_1d = std::lround(std::sqrt(n_k));
+        F.fit_points            = {{0, 1, n_1d}};
+        for (unsigned int j = 0; j < 3; ++j)
+          for (unsigned int a = 0; a < 3; ++a)
+            B(j, a) = basis(F.fit_points[j], a);
+        F.fit.reinit(3, 3);
+        F.fit.invert(B);
+      }
     return cache.emplace(key, std::move(F)).first->second;
   }
 
@@ -199,6 +241,7 @@ namespace hrcontact
     const TriangleSplit                       &split,
     const std::vector<Point<2>>               &points,
     const std::vector<double>                 &weights,
+    const Factors                             &F,
     Vector<double>                            &c) const
   {
     c.reinit(n_rows(split));
@@ -207,20 +250,21 @@ namespace hrcontact
     const unsigned int n_tri = split.n_triangles();
     const unsigned int n_k   = points.size() / n_tri;
     // -f against P_{p-1} on each triangle.
-    std::vector<Tensor<1, 2>> body(points.size());
-    Vector<double>            value(2);
-    for (unsigned int q = 0; f && q < points.size(); ++q)
-      {
-        f->vector_value(points[q], value);
-        body[q] = Tensor<1, 2>({value[0], value[1]});
-      }
+    Vector<double> value(2);
     for (unsigned int k = 0; k < n_tri; ++k)
-      for (unsigned int i = 0; i < 2; ++i)
-        for (unsigned int l = 0; l < lower.monomials.size(); ++l, ++r)
-          for (unsigned int q = k * n_k; f && q < (k + 1) * n_k; ++q)
-            c(r) -= weights[q] * body[q][i] * lower.value(split, points[q], l);
+      {
+        for (unsigned int q = k * n_k; f && q < (k + 1) * n_k; ++q)
+          {
+            f->vector_value(points[q], value);
+            for (unsigned int i = 0; i < 2; ++i)
+              for (unsigned int l = 0; l < lower.monomials.size(); ++l)
+                c(r + i * lower.monomials.size() + l) -=
+                  weights[q] * value[i] * F.lower_values(q, l);
+          }
+        r += 2 * lower.monomials.size();
+      }
     // The face tractions on the outer edges (the inner rows' data are 0).
-    const QGauss<1> edge_rule(degree + 3);
+    static const QGauss<1> edge_rule(degree + 3);
     for (unsigned int k = 0; k < n_tri; ++k)
       {
         const unsigned int face = split.segment[k];
@@ -252,58 +296,90 @@ namespace hrcontact
     // Exact for the energy's degree 2p on a parallelogram (eps(u_h)
     // linear); more points where eps(u_h) is rational.
     const unsigned int n_tri = split.parallelogram() ? degree + 1 : degree + 5;
-    std::vector<Point<2>> points;
-    std::vector<double>   weights;
+    points.clear();
+    weights.clear();
     split.rule(n_tri, points, weights);
-    std::vector<SymmetricTensor<2, 2>> eps, sigma_h;
     sampler(cell, split, points, eps, sigma_h);
     const Factors &F = factors(split, cell->material_id(), points, weights);
 
     const unsigned int n_k = points.size() / split.n_triangles();
-    Vector<double>     c, g(polynomials.n_unknowns(split.n_triangles()));
-    constraint_data(cell, split, points, weights, c);
-    for (unsigned int q = 0; q < points.size(); ++q)
-      {
-        const double e[3] = {eps[q][0][0], eps[q][1][1], 2 * eps[q][0][1]};
-        for (unsigned int m = 0; m < polynomials.monomials.size(); ++m)
-          {
-            const double v =
-              weights[q] * polynomials.value(split, points[q], m);
-            for (unsigned int cc = 0; cc < 3; ++cc)
-              g(polynomials.index(q / n_k, cc, m)) += v * e[cc];
-          }
-      }
+    const unsigned int n_m = polynomials.monomials.size();
+    constraint_data(cell, split, points, weights, F, c);
     x.reinit(polynomials.n_unknowns(split.n_triangles()));
+    // The factors of a similar cell of size F.h: A scales as h, the
+    // energy's Hessian as h^2 (the unknowns are stresses, dimensionless in
+    // h), so M_c as 1/h and M_g as 1/h^2.
+    const double scale = F.h / split.h;
+    xg.reinit(x.size());
     F.M_c.vmult(x, c);
-    F.M_g.vmult_add(x, g);
-    Vector<double> Ax(c.size());
-    F.A.vmult(Ax, x);
-    Ax -= c;
+    if (F.M_g_G.m() > 0)
+      {
+        // The strain's linear coefficients (xx, yy, 2 xy; 1, xi, eta).
+        Vector<double> e_a(9);
+        for (unsigned int j = 0; j < 3; ++j)
+          {
+            const auto  &e    = eps[F.fit_points[j]];
+            const double v[3] = {e[0][0], e[1][1], 2 * e[0][1]};
+            for (unsigned int cc = 0; cc < 3; ++cc)
+              for (unsigned int a = 0; a < 3; ++a)
+                e_a(3 * cc + a) += F.fit(a, j) * v[cc];
+          }
+        F.M_g_G.vmult(xg, e_a);
+        x.sadd(scale, 1., xg);
+      }
+    else
+      {
+        g.reinit(x.size());
+        for (unsigned int q = 0; q < points.size(); ++q)
+          {
+            const double e[3] = {eps[q][0][0], eps[q][1][1], 2 * eps[q][0][1]};
+            for (unsigned int m = 0; m < n_m; ++m)
+              {
+                const double v = weights[q] * F.values(q, m);
+                for (unsigned int cc = 0; cc < 3; ++cc)
+                  g(polynomials.index(q / n_k, cc, m)) += v * e[cc];
+              }
+          }
+        F.M_g.vmult(xg, g);
+        x.sadd(scale, scale * scale, xg);
+      }
+    // A x - c = -U_0 U_0^T c.
+    Vector<double> projection(F.left_null.n());
+    F.left_null.Tvmult(projection, c);
+    Ax.reinit(c.size());
+    F.left_null.vmult(Ax, projection);
     if (sigma_max > 0)
       residual = std::max(residual, Ax.linfty_norm() / (sigma_max * split.h));
 
     // This cell's share of eta^2 (tau - C eps(u_h), with C eps = S^-1 e)
     // and of the computed stresses' energy.
     const auto &[S, S_inv] = compliances(cell->material_id());
-    Vector<double> e(3), Ce(3), v(3), Sv(3);
+    const auto energy      = [&S](const double(&v)[3]) {
+      double sum = 0;
+      for (unsigned int a = 0; a < 3; ++a)
+        for (unsigned int b = 0; b < 3; ++b)
+          sum += v[a] * S(a, b) * v[b];
+      return sum;
+    };
     bound_squared = energy_squared = 0;
     for (unsigned int q = 0; q < points.size(); ++q)
       {
-        const auto tau = polynomials.stress(x, split, q / n_k, points[q]);
-        e(0)           = eps[q][0][0];
-        e(1)           = eps[q][1][1];
-        e(2)           = 2 * eps[q][0][1];
-        S_inv.vmult(Ce, e);
-        v(0) = tau[0][0] - Ce(0);
-        v(1) = tau[1][1] - Ce(1);
-        v(2) = tau[0][1] - Ce(2);
-        S.vmult(Sv, v);
-        bound_squared += weights[q] * (v * Sv);
-        v(0) = sigma_h[q][0][0];
-        v(1) = sigma_h[q][1][1];
-        v(2) = sigma_h[q][0][1];
-        S.vmult(Sv, v);
-        energy_squared += weights[q] * (v * Sv);
+        // tau - C eps(u_h) (xx, yy, xy).
+        const unsigned int k = q / n_k;
+        const double e[3]    = {eps[q][0][0], eps[q][1][1], 2 * eps[q][0][1]};
+        double       v[3]    = {0, 0, 0};
+        for (unsigned int cc = 0; cc < 3; ++cc)
+          {
+            for (unsigned int m = 0; m < n_m; ++m)
+              v[cc] += x(polynomials.index(k, cc, m)) * F.values(q, m);
+            for (unsigned int b = 0; b < 3; ++b)
+              v[cc] -= S_inv(cc, b) * e[b];
+          }
+        bound_squared += weights[q] * energy(v);
+        const double s[3] = {sigma_h[q][0][0],
+                             sigma_h[q][1][1],
+                             sigma_h[q][0][1]};
+        energy_squared += weights[q] * energy(s);
       }
   }
 } // namespace hrcontact

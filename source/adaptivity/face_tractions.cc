@@ -1,5 +1,7 @@
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/timer.h>
 
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
@@ -9,15 +11,15 @@
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
-#include <deal.II/distributed/tria_base.h>
-
 #include <hrcontact/adaptivity/face_tractions.h>
+#include <hrcontact/adaptivity/refined_face_exchange.h>
 #include <hrcontact/postprocess/field_values.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <iostream>
 #include <map>
-#include <optional>
 #include <set>
 
 namespace hrcontact
@@ -177,9 +179,26 @@ namespace hrcontact
   void
   FaceTractions::cell_residuals()
   {
-    const Scene<2>             &scene = results.scene;
-    const FE_Q<2>               hat(1);
-    const QGauss<2>             q_cell(4);
+    // sigma_h at the cell's 2 x 2 Gauss points (the HR assembly's rule) and
+    // at two Gauss points of each face and of each of its halves, all from
+    // one FEValues on unit points (values only: no mapping per face).
+    const Scene<2> &scene = results.scene;
+    const FE_Q<2>   hat(1);
+    const QGauss<2> q_cell(2);
+    const QGauss<1> q_face(2);
+    // Per face: the whole face, then its halves from vertex 0 and 1.
+    std::vector<Point<2>> unit(q_cell.get_points());
+    for (const unsigned int f : GeometryInfo<2>::face_indices())
+      {
+        const Point<2> a = GeometryInfo<2>::unit_cell_vertex(
+                         GeometryInfo<2>::face_to_cell_vertices(f, 0)),
+                       b = GeometryInfo<2>::unit_cell_vertex(
+                         GeometryInfo<2>::face_to_cell_vertices(f, 1));
+        for (const auto &[from, length] :
+             {std::pair(0., 1.), std::pair(0., 0.5), std::pair(0.5, 0.5)})
+          for (unsigned int g = 0; g < 2; ++g)
+            unit.push_back(a + (from + length * q_face.point(g)[0]) * (b - a));
+      }
     FEValues<2>                 hv(StaticMappingQ1<2>::mapping,
                    hat,
                    q_cell,
@@ -187,29 +206,10 @@ namespace hrcontact
                      update_JxW_values);
     FEValues<2>                 sv(StaticMappingQ1<2>::mapping,
                    *results.spaces.fe_stress,
-                   q_cell,
+                   Quadrature<2>(unit),
                    update_values);
-    const QGauss<1>             q_face(6);
-    FEFaceValues<2>             hfv(StaticMappingQ1<2>::mapping,
-                        hat,
-                        q_face,
-                        update_values | update_quadrature_points |
-                          update_normal_vectors | update_JxW_values);
-    FEFaceValues<2>             sfv(StaticMappingQ1<2>::mapping,
-                        *results.spaces.fe_stress,
-                        q_face,
-                        update_values);
-    FESubfaceValues<2>          hsv(StaticMappingQ1<2>::mapping,
-                           hat,
-                           q_face,
-                           update_quadrature_points | update_normal_vectors |
-                             update_JxW_values);
-    FESubfaceValues<2>          ssv(StaticMappingQ1<2>::mapping,
-                           *results.spaces.fe_stress,
-                           q_face,
-                           update_values);
     std::vector<Vector<double>> s_values(
-      q_cell.size(), Vector<double>(MixedSpaces<2>::n_stress_components));
+      unit.size(), Vector<double>(MixedSpaces<2>::n_stress_components));
     cell_residual.assign(results.triangulation().n_active_cells(), {});
     average.assign(faces.size(), {});
     Vector<double> f(2);
@@ -238,97 +238,102 @@ namespace hrcontact
           for (unsigned int v = 0; v < 4; ++v)
             for (unsigned int c = 0; c < 2; ++c)
               scale = std::max(scale, std::abs(R[v][c]));
-          face_moments(cell, hfv, sfv, hsv, ssv);
+          face_moments(cell, q_face, s_values);
         }
   }
 
   void
   FaceTractions::face_moments(const DoFHandler<2>::active_cell_iterator &cell,
-                              FEFaceValues<2>                           &hfv,
-                              FEFaceValues<2>                           &sfv,
-                              FESubfaceValues<2>                        &hsv,
-                              FESubfaceValues<2>                        &ssv)
+                              const QGauss<1>                           &q_face,
+                              const std::vector<Vector<double>> &s_values)
   {
     // Loaded faces: their data moments leave R_K; the others: the averaged
     // sigma_h n moments against the segment's hats, the start of the vertex
-    // problems. A face with a hanging node: each half from this side.
-    const unsigned int          n_q = hfv.n_quadrature_points;
-    std::vector<Vector<double>> s_face(
-      n_q, Vector<double>(MixedSpaces<2>::n_stress_components));
+    // problems. A face with a hanging node: each half from this side. The
+    // faces are straight (Q1 mapping): points, lengths and normals from the
+    // vertices.
     const unsigned int k        = cell->active_cell_index();
     auto              &R        = cell_residual[k];
     const auto        &vertices = results.triangulation().get_vertices();
-    const auto         add      = [&](const unsigned int     fn,
-                         const unsigned int     id,
-                         const FEValuesBase<2> &h,
-                         const FEValuesBase<2> &sv) {
-      Face &face = faces[id];
-      sv.get_function_values(results.stress, s_face);
-      const double side =
-        (face.boundary ? 1. : 0.5) * (face.owner == k ? 1. : -1.);
-      const Point<2> &a = vertices[face.vertices[0]],
-                     &b = vertices[face.vertices[1]];
-      for (unsigned int q = 0; q < n_q; ++q)
-        {
-          const Tensor<1, 2> n  = h.normal_vector(q);
-          const Tensor<1, 2> sn = stress_tensor<2>(s_face[q]) * n;
-          const double       lambda =
-            (h.quadrature_point(q) - a) * (b - a) / (b - a).norm_square();
-          const std::array<double, 2> hat{{1 - lambda, lambda}};
-          const Tensor<1, 2>          t =
-            face.boundary ?
-                                    data_traction(face.boundary_id, h.quadrature_point(q), n) :
-                                    Tensor<1, 2>();
-          for (unsigned int fa = 0; fa < 2; ++fa)
-            {
-              const double phi = hat[fa] * h.JxW(q);
-              // A loaded face is a whole face of this cell: its hat is the
-              // cell's.
-              const unsigned int v =
-                GeometryInfo<2>::face_to_cell_vertices(fn, 0);
-              const unsigned int cv =
-                cell->vertex_index(v) == face.vertices[fa] ?
-                               v :
-                               GeometryInfo<2>::face_to_cell_vertices(fn, 1);
-              for (unsigned int c = 0; c < 2; ++c)
-                if (face.known[c])
-                  R[cv][c] -= t[c] * phi;
-                else
-                  average[id][fa][c] += side * sn[c] * phi;
-            }
-        }
-    };
     for (const unsigned int fn : cell->face_indices())
-      if (cell->face(fn)->has_children())
-        for (unsigned int sf = 0; sf < 2; ++sf)
+      {
+        const unsigned int v0 = GeometryInfo<2>::face_to_cell_vertices(fn, 0),
+                           v1 = GeometryInfo<2>::face_to_cell_vertices(fn, 1);
+        const Point<2> p0 = cell->vertex(v0), p1 = cell->vertex(v1);
+        // Outward: faces 0 and 3 turn the tangent p0 -> p1
+        // counter-clockwise, faces 1 and 2 clockwise.
+        const Tensor<1, 2> t    = (p1 - p0) / (p1 - p0).norm();
+        const Tensor<1, 2> n    = (fn == 0 || fn == 3) ?
+                                    Tensor<1, 2>({-t[1], t[0]}) :
+                                    Tensor<1, 2>({t[1], -t[0]});
+        const auto         face = cell->face(fn);
+        for (unsigned int part = 0; part < (face->has_children() ? 2 : 1);
+             ++part)
           {
-            hsv.reinit(Triangulation<2>::active_cell_iterator(cell), fn, sf);
-            ssv.reinit(cell, fn, sf);
-            add(fn, cell->face(fn)->child(sf)->index(), hsv, ssv);
+            // The segment, and which half of p0 -> p1 it covers.
+            unsigned int id = face->index(), first = 4 + 6 * fn;
+            double       from = 0, length = 1;
+            if (face->has_children())
+              {
+                id = face->child(part)->index();
+                const bool at_p0 =
+                  face->child(part)->vertex_index(0) ==
+                    cell->vertex_index(v0) ||
+                  face->child(part)->vertex_index(1) == cell->vertex_index(v0);
+                from   = at_p0 ? 0. : 0.5;
+                length = 0.5;
+                first += at_p0 ? 2 : 4;
+              }
+            Face        &face_data = faces[id];
+            const double side      = (face_data.boundary ? 1. : 0.5) *
+                                (face_data.owner == k ? 1. : -1.);
+            const Point<2> &a = vertices[face_data.vertices[0]],
+                           &b = vertices[face_data.vertices[1]];
+            const double L    = length * (p1 - p0).norm();
+            for (unsigned int g = 0; g < q_face.size(); ++g)
+              {
+                const Point<2> x =
+                  p0 + (from + length * q_face.point(g)[0]) * (p1 - p0);
+                const double       JxW = q_face.weight(g) * L;
+                const Tensor<1, 2> sn =
+                  stress_tensor<2>(s_values[first + g]) * n;
+                const double lambda = (x - a) * (b - a) / (b - a).norm_square();
+                const std::array<double, 2> hat{{1 - lambda, lambda}};
+                const Tensor<1, 2>          data =
+                  face_data.boundary ?
+                             data_traction(face_data.boundary_id, x, n) :
+                             Tensor<1, 2>();
+                for (unsigned int fa = 0; fa < 2; ++fa)
+                  {
+                    // A loaded face is a whole face of this cell: its hat
+                    // is the cell's.
+                    const unsigned int cv =
+                      cell->vertex_index(v0) == face_data.vertices[fa] ? v0 :
+                                                                         v1;
+                    for (unsigned int c = 0; c < 2; ++c)
+                      if (face_data.known[c])
+                        R[cv][c] -= data[c] * hat[fa] * JxW;
+                      else
+                        average[id][fa][c] += side * sn[c] * hat[fa] * JxW;
+                  }
+              }
           }
-      else
-        {
-          hfv.reinit(Triangulation<2>::active_cell_iterator(cell), fn);
-          sfv.reinit(cell, fn);
-          add(fn, cell->face(fn)->index(), hfv, sfv);
-        }
+      }
   }
 
   const FullMatrix<double> &
-  FaceTractions::pseudo_inverse(const FullMatrix<double> &A,
-                                const unsigned int        m)
+  FaceTractions::pseudo_inverse(const std::vector<signed char> &key)
   {
-    // Kept per sign pattern: most vertices share one of a few.
-    const unsigned int       n = A.m();
-    std::vector<signed char> key{(signed char)n, (signed char)m};
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = 0; j < m; ++j)
-        key.push_back((signed char)A(i, j));
+    // Kept per sign pattern (n, m, then A row by row): most vertices share
+    // one of a few.
     auto it = pseudo_inverses.find(key);
     if (it == pseudo_inverses.end())
       {
+        const unsigned int       n = key[0], m = key[1];
         LAPACKFullMatrix<double> pinv(n, m);
-        pinv = A;
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < m; ++j)
+            pinv(i, j) = key[2 + i * m + j];
         pinv.compute_inverse_svd(1e-12);
         FullMatrix<double> P(m, n);
         Vector<double>     unit(n), column(m);
@@ -361,18 +366,33 @@ namespace hrcontact
   void
   FaceTractions::solve_vertex_problems()
   {
-    const auto &tria         = results.triangulation();
-    const auto  vertex_cells = GridTools::vertex_to_cell_map(tria);
-    residual                 = 0;
-    // The cells with vertex vi (the map also lists the coarse cells on
-    // whose faces vi hangs).
-    const auto patch = [&](const unsigned int vi) {
-      std::vector<Triangulation<2>::active_cell_iterator> cells;
-      for (const auto &c : vertex_cells[vi])
-        for (const unsigned int v : c->vertex_indices())
-          if (c->vertex_index(v) == vi)
-            cells.push_back(c);
-      return cells;
+    const auto &tria = results.triangulation();
+    residual         = 0;
+    // The cells with each vertex (not those on whose faces it hangs), in
+    // one array by vertex: cells[start[v]] .. cells[start[v + 1] - 1].
+    using Cell = Triangulation<2>::active_cell_iterator;
+    std::vector<unsigned int> start(tria.n_vertices() + 1, 0);
+    for (const auto &cell : tria.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          ++start[cell->vertex_index(v) + 1];
+    for (unsigned int v = 0; v < tria.n_vertices(); ++v)
+      start[v + 1] += start[v];
+    std::vector<Cell>         cells(start.back());
+    std::vector<unsigned int> filled(start.begin(), start.end() - 1);
+    for (const auto &cell : tria.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          cells[filled[cell->vertex_index(v)]++] = cell;
+    const auto patch = [&](const unsigned int v) {
+      return ArrayView<const Cell>(cells.data() + start[v],
+                                   start[v + 1] - start[v]);
+    };
+    const auto own = [&](const ArrayView<const Cell> &patch) {
+      for (const auto &c : patch)
+        if (results.partition.owned_cell[c->active_cell_index()])
+          return true;
+      return false;
     };
     // First the hanging nodes: those on this process's own coarse cells'
     // faces or of its own fine cells (it holds their three cells).
@@ -384,27 +404,18 @@ namespace hrcontact
             {
               const unsigned int h = cell->face(f)->child(0)->vertex_index(1);
               hanging[h]           = true;
-              const auto cells     = patch(h);
-              bool       own =
-                results.partition.owned_cell[cell->active_cell_index()];
-              for (const auto &c : cells)
-                own |= results.partition.owned_cell[c->active_cell_index()];
-              if (own)
-                solve_vertex(h, cells, true);
+              if (results.partition.owned_cell[cell->active_cell_index()] ||
+                  own(patch(h)))
+                solve_vertex(h, patch(h), true);
             }
-    exchange_from_coarse_cells(hanging_moment);
-    for (unsigned int vi = 0; vi < vertex_cells.size(); ++vi)
-      if (!hanging[vi])
-        {
-          // Only the vertices of this process's own cells (whose patches it
-          // holds whole).
-          const auto cells = patch(vi);
-          bool       own   = false;
-          for (const auto &c : cells)
-            own |= results.partition.owned_cell[c->active_cell_index()];
-          if (own)
-            solve_vertex(vi, cells, false);
-        }
+    exchange_from_coarse_cells(results.triangulation(),
+                               results.partition.communicator,
+                               hanging_moment);
+    // Then the others of this process's own cells (whose patches it holds
+    // whole).
+    for (unsigned int v = 0; v < tria.n_vertices(); ++v)
+      if (!hanging[v] && own(patch(v)))
+        solve_vertex(v, patch(v), false);
     const MPI_Comm comm = results.partition.communicator;
     scale               = Utilities::MPI::max(scale, comm);
     residual            = Utilities::MPI::max(residual, comm);
@@ -413,24 +424,32 @@ namespace hrcontact
 
   void
   FaceTractions::solve_vertex(
-    const unsigned int                                         vi,
-    const std::vector<Triangulation<2>::active_cell_iterator> &cells,
-    const bool                                                 hanging)
+    const unsigned int                                             vi,
+    const ArrayView<const Triangulation<2>::active_cell_iterator> &cells,
+    const bool                                                     hanging)
   {
-    for (const auto &c : cells)
-      AssertThrow(usable[c->active_cell_index()],
-                  ExcMessage("Error bound: a vertex patch of an own cell "
-                             "is not held whole by this process."));
-    // The vertex's index in each cell, the cells' segments through it, and
-    // what the hanging nodes' moments already give each row (a coarse
-    // cell's face through vi that a hanging node splits: half of that
-    // node's moments on both halves, eq. of the conforming hat).
-    const unsigned int                     n = cells.size();
-    std::vector<unsigned int>              local(n);
-    std::vector<std::vector<unsigned int>> cell_faces(n);
-    std::vector<std::array<double, 2>>     known(n, {{0., 0.}});
+    // Fixed-size scratch: a 2D vertex has a handful of cells.
+    constexpr unsigned int max_cells = 16;
+    const unsigned int     n         = cells.size();
+    AssertThrow(n <= max_cells,
+                ExcMessage("Error bound: more than 16 cells at a vertex."));
+    // The vertex's index in each cell, the segments through it (bit j of
+    // member[i]: segment j is a face of cell i, with sign[i][j]), and what
+    // the hanging nodes' moments already give each row (a coarse cell's
+    // face through vi that a hanging node splits: half of that node's
+    // moments on both halves, from the conforming hat).
+    std::array<unsigned int, max_cells>          local{}, cell{};
+    std::array<unsigned int, 2 * max_cells>      segment{};
+    std::array<std::uint32_t, max_cells>         member{};
+    std::array<std::array<double, 2>, max_cells> known{};
+    std::array<std::array<signed char, 2 * max_cells>, max_cells> sign{};
+    unsigned int n_segments = 0;
     for (unsigned int i = 0; i < n; ++i)
       {
+        AssertThrow(usable[cells[i]->active_cell_index()],
+                    ExcMessage("Error bound: a vertex patch of an own cell "
+                               "is not held whole by this process."));
+        cell[i] = cells[i]->active_cell_index();
         for (unsigned int v = 0; v < 4; ++v)
           if (cells[i]->vertex_index(v) == vi)
             local[i] = v;
@@ -440,11 +459,15 @@ namespace hrcontact
             if (face->vertex_index(0) != vi && face->vertex_index(1) != vi)
               continue;
             const unsigned int id = segment_through(face, vi);
-            cell_faces[i].push_back(id);
+            unsigned int       j  = 0;
+            while (j < n_segments && segment[j] != id)
+              ++j;
+            if (j == n_segments)
+              segment[n_segments++] = id;
+            member[i] |= 1u << j;
+            sign[i][j] = faces[id].owner == cell[i] ? 1 : -1;
             if (!face->has_children())
               continue;
-            const double sign =
-              faces[id].owner == cells[i]->active_cell_index() ? 1. : -1.;
             for (unsigned int half = 0; half < 2; ++half)
               {
                 const auto it = hanging_moment.find(face->child(half)->index());
@@ -452,58 +475,67 @@ namespace hrcontact
                             ExcMessage("Error bound: a hanging node's "
                                        "moments are missing."));
                 for (unsigned int c = 0; c < 2; ++c)
-                  known[i][c] += sign * 0.5 * it->second[c];
+                  known[i][c] += sign[i][j] * 0.5 * it->second[c];
               }
           }
       }
+    std::array<unsigned int, 2 * max_cells> unknown{};
+    std::array<double, 2 * max_cells>       b{}, start{};
+    std::array<double, max_cells>           R{}, r{};
     for (unsigned int c = 0; c < 2; ++c)
       {
-        std::vector<unsigned int> unknown;
-        for (const auto &fs : cell_faces)
-          for (const unsigned int id : fs)
-            if (!faces[id].known[c] &&
-                std::find(unknown.begin(), unknown.end(), id) == unknown.end())
-              unknown.push_back(id);
-        const unsigned int m = unknown.size();
-        Vector<double>     R(n), b0(m), b(m);
-        FullMatrix<double> A(n, std::max(m, 1u));
+        // The unknowns (faces not loaded in c) and A's sign pattern.
+        unsigned int m = 0;
+        for (unsigned int j = 0; j < n_segments; ++j)
+          if (!faces[segment[j]].known[c])
+            unknown[m++] = j;
+        key.assign({(signed char)n, (signed char)m});
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int k = 0; k < m; ++k)
+            key.push_back((member[i] >> unknown[k]) & 1u ? sign[i][unknown[k]] :
+                                                           (signed char)0);
+        const auto A = [&](const unsigned int i, const unsigned int k) {
+          return double(key[2 + i * m + k]);
+        };
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            const Face &face = faces[segment[unknown[k]]];
+            start[k] =
+              average[segment[unknown[k]]][face.vertices[0] == vi ? 0 : 1][c];
+          }
+        // b = b0 + A^+ (R - A b0); what is left: R - A b.
         for (unsigned int i = 0; i < n; ++i)
           {
-            R(i) = cell_residual[cells[i]->active_cell_index()][local[i]][c] -
-                   known[i][c];
-            for (unsigned int j = 0; j < m; ++j)
-              if (std::find(cell_faces[i].begin(),
-                            cell_faces[i].end(),
-                            unknown[j]) != cell_faces[i].end())
-                A(i, j) =
-                  faces[unknown[j]].owner == cells[i]->active_cell_index() ?
-                    1. :
-                    -1.;
+            R[i] = cell_residual[cell[i]][local[i]][c] - known[i][c];
+            r[i] = R[i];
+            for (unsigned int k = 0; k < m; ++k)
+              r[i] -= A(i, k) * start[k];
           }
-        for (unsigned int j = 0; j < m; ++j)
-          b0(j) =
-            average[unknown[j]][faces[unknown[j]].vertices[0] == vi ? 0 : 1][c];
-        // b = b0 + A^+ (R - A b0); what is left: R - A b.
-        Vector<double> r(R);
         if (m > 0)
           {
-            Vector<double> Ab(n);
-            A.vmult(Ab, b0);
-            r -= Ab;
-            pseudo_inverse(A, m).vmult(b, r);
-            b += b0;
-            A.vmult(Ab, b);
-            r = R;
-            r -= Ab;
+            const FullMatrix<double> &P = pseudo_inverse(key);
+            for (unsigned int k = 0; k < m; ++k)
+              {
+                b[k] = start[k];
+                for (unsigned int i = 0; i < n; ++i)
+                  b[k] += P(k, i) * r[i];
+              }
           }
-        residual = std::max(residual, r.linfty_norm());
-        for (unsigned int j = 0; j < m; ++j)
+        double left = 0;
+        for (unsigned int i = 0; i < n; ++i)
           {
-            Face              &face = faces[unknown[j]];
-            const unsigned int end  = face.vertices[0] == vi ? 0 : 1;
-            face.moment[end][c]     = b(j);
+            double Ab = 0;
+            for (unsigned int k = 0; k < m; ++k)
+              Ab += A(i, k) * b[k];
+            left = std::max(left, std::abs(R[i] - Ab));
+          }
+        residual = std::max(residual, left);
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            Face &face = faces[segment[unknown[k]]];
+            face.moment[face.vertices[0] == vi ? 0 : 1][c] = b[k];
             if (hanging)
-              hanging_moment[unknown[j]][c] = b(j);
+              hanging_moment[segment[unknown[k]]][c] = b[k];
           }
       }
   }
@@ -531,54 +563,11 @@ namespace hrcontact
                   bubble[cell->face(f)->child(half)->index()][c] =
                     0.5 * (at_h[1 - half][c] - at_h[half][c]);
             }
-    exchange_from_coarse_cells(bubble);
+    exchange_from_coarse_cells(results.triangulation(),
+                               results.partition.communicator,
+                               bubble);
     for (const auto &[line, b] : bubble)
       faces[line].bubble = b;
   }
 
-  void
-  FaceTractions::exchange_from_coarse_cells(
-    std::map<unsigned int, std::array<double, 2>> &values) const
-  {
-    using Tria       = parallel::TriangulationBase<2>;
-    const auto *tria = dynamic_cast<const Tria *>(&results.triangulation());
-    if (tria == nullptr || tria->n_global_active_cells() == 0 ||
-        Utilities::MPI::n_mpi_processes(results.partition.communicator) == 1)
-      return;
-    using Cell = Triangulation<2>::active_cell_iterator;
-    // Per refined face of an owned cell: its number and its halves'
-    // moments.
-    GridTools::exchange_cell_data_to_ghosts<std::vector<double>,
-                                            Triangulation<2>>(
-      results.triangulation(),
-      [&](const Cell &cell) -> std::optional<std::vector<double>> {
-        std::vector<double> data;
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->has_children())
-            {
-              data.push_back(f);
-              for (unsigned int half = 0; half < 2; ++half)
-                for (unsigned int c = 0; c < 2; ++c)
-                  data.push_back(
-                    values[cell->face(f)->child(half)->index()][c]);
-            }
-        if (data.empty())
-          return {};
-        return data;
-      },
-      [&](const Cell &cell, const std::vector<double> &data) {
-        for (unsigned int i = 0; i + 5 <= data.size(); i += 5)
-          {
-            const auto face = cell->face(static_cast<unsigned int>(data[i]));
-            // Where the fine side is artificial here the face is whole: no
-            // problem here needs its halves.
-            if (!face->has_children())
-              continue;
-            for (unsigned int half = 0; half < 2; ++half)
-              for (unsigned int c = 0; c < 2; ++c)
-                values[face->child(half)->index()][c] =
-                  data[i + 1 + 2 * half + c];
-          }
-      });
-  }
 } // namespace hrcontact

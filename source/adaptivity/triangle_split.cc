@@ -6,6 +6,7 @@
 #include <hrcontact/adaptivity/triangle_split.h>
 
 #include <cmath>
+#include <map>
 
 namespace hrcontact
 {
@@ -87,7 +88,9 @@ namespace hrcontact
                       std::vector<Point<2>> &points,
                       std::vector<double>   &weights) const
   {
-    const QGauss<1> g(n);
+    // Kept per order: QGauss finds its points by Newton's method.
+    static std::map<unsigned int, QGauss<1>> rules;
+    const QGauss<1> &g = rules.try_emplace(n, n).first->second;
     for (unsigned int k = 0; k < n_triangles(); ++k)
       {
         const Point<2> &a = centre, &b = P[k], &c = P[k + 1];
@@ -158,6 +161,8 @@ namespace hrcontact
     , fe_s(*results.spaces.fe_stress)
     , u_dofs(fe_u.n_dofs_per_cell())
     , s_dofs(fe_s.n_dofs_per_cell())
+    , u_values(fe_u.n_dofs_per_cell())
+    , s_values(fe_s.n_dofs_per_cell())
   {
     for (unsigned int i = 0; i < fe_u.n_dofs_per_cell(); ++i)
       u_component.push_back(fe_u.system_to_component_index(i).first);
@@ -229,8 +234,14 @@ namespace hrcontact
             StaticMappingQ1<2>::mapping.transform_real_to_unit_cell(cell, x));
         tabulate(own);
       }
-    eps.assign(points.size(), SymmetricTensor<2, 2>());
-    sigma.assign(points.size(), SymmetricTensor<2, 2>());
+    // The cell's values once (global lookups cost), then per point the
+    // reference gradient of u, mapped by J^-T.
+    for (unsigned int i = 0; i < u_dofs.size(); ++i)
+      u_values[i] = results.displacement(u_dofs[i]);
+    for (unsigned int j = 0; j < s_dofs.size(); ++j)
+      s_values[j] = results.stress(s_dofs[j]);
+    eps.resize(points.size());
+    sigma.resize(points.size());
     for (unsigned int q = 0; q < points.size(); ++q)
       {
         Tensor<2, 2> Jq_inv_T = J_inv_T;
@@ -241,14 +252,17 @@ namespace hrcontact
               Jq += outer_product(cell->vertex(v), table->hat_grad[q][v]);
             Jq_inv_T = transpose(invert(Jq));
           }
-        Tensor<2, 2> grad;
+        Tensor<2, 2> reference_grad;
         for (unsigned int i = 0; i < u_dofs.size(); ++i)
-          grad[u_component[i]] +=
-            results.displacement(u_dofs[i]) * (Jq_inv_T * table->u_grad[q][i]);
+          reference_grad[u_component[i]] += u_values[i] * table->u_grad[q][i];
+        Tensor<2, 2> grad;
+        for (unsigned int c = 0; c < 2; ++c)
+          grad[c] = Jq_inv_T * reference_grad[c];
         eps[q] = symmetrize(grad);
+        SymmetricTensor<2, 2> s;
         for (unsigned int j = 0; j < s_dofs.size(); ++j)
-          sigma[q] +=
-            results.stress(s_dofs[j]) * table->s_value[q][j] * s_tensor[j];
+          s += (s_values[j] * table->s_value[q][j]) * s_tensor[j];
+        sigma[q] = s;
       }
   }
 } // namespace hrcontact

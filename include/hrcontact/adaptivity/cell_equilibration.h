@@ -7,6 +7,7 @@
 #include <hrcontact/adaptivity/face_tractions.h>
 #include <hrcontact/adaptivity/triangle_split.h>
 
+#include <array>
 #include <map>
 #include <vector>
 
@@ -23,7 +24,8 @@ namespace hrcontact
    * meet whose tractions one symmetric polynomial could not match there.
    * The constraints and the energy depend on the cell's shape only: their
    * factors (SVD of the constraints, null space, reduced Hessian) are kept
-   * per shape and body and reused by every translated copy.
+   * per shape and body and reused, scaled, by every translated and scaled
+   * copy (the refinement levels of a locally refined mesh).
    */
   class CellEquilibration
   {
@@ -53,6 +55,17 @@ namespace hrcontact
       /** x = M_c c + M_g g: M_g = N (N^T H N)^{-1} N^T, M_c = A^+ - M_g H
        * A^+, with N the null space of A and H the energy's Hessian. */
       dealii::FullMatrix<double> M_c, M_g;
+      /** The size of the cell they were computed on. */
+      double h = 1;
+      /** The monomials of degree p and p - 1 at the rule's points (rows). */
+      dealii::FullMatrix<double> values, lower_values;
+      /** The left null space of A: A x - c = -U_0 U_0^T c. */
+      dealii::FullMatrix<double> left_null;
+      /** Parallelograms: M_g G, G taking the linear strain's coefficients
+       * to g, and the inverse of the basis (1, xi, eta) at three of the
+       * rule's points that fits them. */
+      dealii::FullMatrix<double>  M_g_G, fit;
+      std::array<unsigned int, 3> fit_points{};
     };
     const Factors &
     factors(const TriangleSplit                 &split,
@@ -72,6 +85,7 @@ namespace hrcontact
                     const TriangleSplit                               &split,
                     const std::vector<dealii::Point<2>>               &points,
                     const std::vector<double>                         &weights,
+                    const Factors                                     &F,
                     dealii::Vector<double>                            &c) const;
 
     const Results<2>                         &results;
@@ -83,6 +97,11 @@ namespace hrcontact
              std::pair<dealii::FullMatrix<double>, dealii::FullMatrix<double>>>
            compliance;
     double sigma_max = 0;
+    /** Scratch of solve(), kept to spare the allocations per cell. */
+    std::vector<dealii::Point<2>>              points;
+    std::vector<double>                        weights;
+    std::vector<dealii::SymmetricTensor<2, 2>> eps, sigma_h;
+    dealii::Vector<double>                     c, g, xg, Ax;
     /** The constraints' rows on a split. */
     unsigned int
     n_rows(const TriangleSplit &split) const;

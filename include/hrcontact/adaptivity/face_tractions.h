@@ -1,7 +1,9 @@
 #ifndef hrcontact_face_tractions_h
 #define hrcontact_face_tractions_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/tensor.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -112,43 +114,40 @@ namespace hrcontact
     classify_faces();
     void
     cell_residuals();
-    /** One cell's face moments (sub-face values for the halves of a face
-     * with a hanging node). */
+    /** One cell's face moments from sigma_h at the unit points of
+     * cell_residuals() (after the cell's four: per face six, the whole
+     * face's two and each half's two). */
     void
     face_moments(const dealii::DoFHandler<2>::active_cell_iterator &cell,
-                 dealii::FEFaceValues<2>                           &hat_values,
-                 dealii::FEFaceValues<2>    &stress_values,
-                 dealii::FESubfaceValues<2> &hat_subface_values,
-                 dealii::FESubfaceValues<2> &stress_subface_values);
+                 const dealii::QGauss<1>                           &q_face,
+                 const std::vector<dealii::Vector<double>>         &s_values);
     void
     solve_vertex_problems();
     /** The vertex problems of vertex @p vertex on @p cells (those with it as
      * a vertex), both components; a @p hanging node's moments are kept for
      * its parents' problems. */
     void
-    solve_vertex(
-      const unsigned int                                                 vertex,
-      const std::vector<dealii::Triangulation<2>::active_cell_iterator> &cells,
-      const bool hanging);
+    solve_vertex(const unsigned int vertex,
+                 const dealii::ArrayView<
+                   const dealii::Triangulation<2>::active_cell_iterator> &cells,
+                 const bool hanging);
     /** The segment (an active line) of @p face through @p vertex. */
     static unsigned int
     segment_through(
       const dealii::TriaIterator<dealii::TriaAccessor<1, 2, 2>> &face,
       const unsigned int                                         vertex);
-    /** Sends the owners' values of @p data (per half of a refined face, by
-     * line index) to the ghosts of their coarse cells (several processes). */
-    void
-    exchange_from_coarse_cells(
-      std::map<unsigned int, std::array<double, 2>> &data) const;
     /** The halves' Legendre quadratics (after the vertex values). */
     void
     join_halves();
     /** Per half of a refined face (by line index): the moment against the
      * hanging node's hat, by component. */
     std::map<unsigned int, std::array<double, 2>> hanging_moment;
-    /** A^+ of a vertex problem's +-1 matrix (its first m columns). */
+    /** A^+ of a vertex problem's +-1 matrix, given as its key: n, m and
+     * the n x m entries row by row. */
     const dealii::FullMatrix<double> &
-    pseudo_inverse(const dealii::FullMatrix<double> &A, const unsigned int m);
+    pseudo_inverse(const std::vector<signed char> &key);
+    /** Scratch of solve_vertex(). */
+    std::vector<signed char> key;
     std::map<std::vector<signed char>, dealii::FullMatrix<double>>
       pseudo_inverses;
   };

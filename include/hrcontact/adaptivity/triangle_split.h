@@ -143,6 +143,7 @@ namespace hrcontact
     const Results<2>                            &results;
     const dealii::FiniteElement<2>              &fe_u, &fe_s;
     std::vector<dealii::types::global_dof_index> u_dofs, s_dofs;
+    std::vector<double>                          u_values, s_values;
     std::vector<unsigned int>                    u_component;
     std::vector<dealii::SymmetricTensor<2, 2>>   s_tensor;
     /** Per number of points and split faces. */
