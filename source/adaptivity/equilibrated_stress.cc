@@ -22,9 +22,14 @@ namespace hrcontact
       "bound, Target error)";
     if (dim != 2)
       throw InputError(what + " is computed in 2D only so far.");
-    if (scene.has_changing_rows())
-      throw InputError(what + " does not cover contact yet (its tractions "
-                              "on the contact faces are not built).");
+    // Prescribed displacements and point supports are the kinds that are
+    // not normal: every other kind (contact, normal constraints) is.
+    for (const auto &source : scene.constraints)
+      if (source->is_normal_kind())
+        throw InputError(what + " does not cover " + source->entry() +
+                         " yet (contact and normal constraints: the "
+                         "tractions on their faces and the contact term of "
+                         "the bound are not built).");
     if (!scene.all_linear() || scene.stress_constraint)
       throw InputError(what + " needs linear elastic bodies so far (no "
                               "Admissible stresses, no nonlinear law).");

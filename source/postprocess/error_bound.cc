@@ -52,6 +52,15 @@ namespace hrcontact
 
   template <int dim>
   void
+  ErrorBound<dim>::check_input(const Scene<dim> &scene,
+                               const Triangulation<dim> &) const
+  {
+    if (compute)
+      EquilibratedStress<dim>::check_scene(scene);
+  }
+
+  template <int dim>
+  void
   ErrorBound<dim>::execute(const Results<dim> &results,
                            PostprocessOutput  &output)
   {

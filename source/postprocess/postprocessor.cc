@@ -155,16 +155,18 @@ namespace hrcontact
 
   template <int dim>
   void
-  Postprocessor<dim>::check_mesh(const Triangulation<dim> &) const
+  Postprocessor<dim>::check_input(const Scene<dim> &,
+                                  const Triangulation<dim> &) const
   {}
 
   template <int dim>
   void
-  PostprocessorManager<dim>::check_mesh(
+  PostprocessorManager<dim>::check_input(
+    const Scene<dim>         &scene,
     const Triangulation<dim> &triangulation) const
   {
     for (const auto &p : postprocessors)
-      p->check_mesh(triangulation);
+      p->check_input(scene, triangulation);
   }
 
   template class Postprocessor<2>;

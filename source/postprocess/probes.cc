@@ -98,7 +98,8 @@ namespace hrcontact
 
   template <int dim>
   void
-  Probes<dim>::check_mesh(const Triangulation<dim> &triangulation) const
+  Probes<dim>::check_input(const Scene<dim> &,
+                           const Triangulation<dim> &triangulation) const
   {
     for (const Probe &probe : probes)
       if (!mesh_contains_point(triangulation, probe.point))

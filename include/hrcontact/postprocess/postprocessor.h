@@ -75,11 +75,13 @@ namespace hrcontact
     virtual bool
     needs_replicated_mesh(const Scene<dim> &scene) const;
     /**
-     * Check its input against the mesh before the solve (a probe outside
-     * the body), throwing InputError; collective. Nothing by default.
+     * Check its input against the scene and the mesh before the solve (a
+     * probe outside the body, a scene the error bound does not cover),
+     * throwing InputError; collective. Nothing by default.
      */
     virtual void
-    check_mesh(const dealii::Triangulation<dim> &triangulation) const;
+    check_input(const Scene<dim>                 &scene,
+                const dealii::Triangulation<dim> &triangulation) const;
   };
 
   /**
@@ -121,9 +123,10 @@ namespace hrcontact
     /** Whether one of them needs every cell on every process. */
     bool
     needs_replicated_mesh(const Scene<dim> &scene) const;
-    /** Each one's check_mesh. */
+    /** Each one's check_input. */
     void
-    check_mesh(const dealii::Triangulation<dim> &triangulation) const;
+    check_input(const Scene<dim>                 &scene,
+                const dealii::Triangulation<dim> &triangulation) const;
 
     /** The names registered, in `all` order. */
     static std::vector<std::string>

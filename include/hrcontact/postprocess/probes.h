@@ -30,7 +30,8 @@ namespace hrcontact
     execute(const Results<dim> &results, PostprocessOutput &output) override;
     /** Every probe point inside the body, before the solve. */
     void
-    check_mesh(const dealii::Triangulation<dim> &triangulation) const override;
+    check_input(const Scene<dim>                 &scene,
+                const dealii::Triangulation<dim> &triangulation) const override;
 
   private:
     struct Probe
