@@ -156,7 +156,8 @@ namespace hrcontact
         for (unsigned int l = 0; l < lower.monomials.size(); ++l)
           F.lower_values(q, l) = lower.value(split, points[q], l);
       }
-    constraint_matrix(split, points, weights, F.A);
+    FullMatrix<double> A;
+    constraint_matrix(split, points, weights, A);
     // The energy's Hessian H = sum_q w_q B_q^T S B_q.
     const FullMatrix<double> &S = compliances(body).first;
     FullMatrix<double>        H(n, n);
@@ -172,7 +173,7 @@ namespace hrcontact
           }
     // A = U Sigma V^T: the pseudo-inverse and the null space N.
     LAPACKFullMatrix<double> svd(n_rows, n);
-    svd = F.A;
+    svd = A;
     svd.compute_svd();
     const auto  &U    = svd.get_svd_u();
     const auto  &VT   = svd.get_svd_vt();

@@ -45,13 +45,13 @@ namespace hrcontact
 
     const TrianglePolynomials polynomials;
     /** The largest residual of the constraints, relative to max |sigma_h|
-     * h_K. */
+     * h_K: the part of the data (tractions, body force) outside the range
+     * of the constraint matrix, which no admissible field can meet. */
     double residual = 0;
 
   private:
     struct Factors
     {
-      dealii::FullMatrix<double> A;
       /** x = M_c c + M_g g: M_g = N (N^T H N)^{-1} N^T, M_c = A^+ - M_g H
        * A^+, with N the null space of A and H the energy's Hessian. */
       dealii::FullMatrix<double> M_c, M_g;
@@ -59,7 +59,8 @@ namespace hrcontact
       double h = 1;
       /** The monomials of degree p and p - 1 at the rule's points (rows). */
       dealii::FullMatrix<double> values, lower_values;
-      /** The left null space of A: A x - c = -U_0 U_0^T c. */
+      /** The left null space U_0 of the constraint matrix A: A x - c =
+       * -U_0 U_0^T c. */
       dealii::FullMatrix<double> left_null;
       /** Parallelograms: M_g G, G taking the linear strain's coefficients
        * to g, and the inverse of the basis (1, xi, eta) at three of the

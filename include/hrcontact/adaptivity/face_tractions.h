@@ -6,8 +6,6 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/tensor.h>
 
-#include <deal.II/fe/fe_values.h>
-
 #include <deal.II/lac/full_matrix.h>
 
 #include <hrcontact/core/results.h>
