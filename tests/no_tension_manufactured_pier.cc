@@ -10,9 +10,6 @@
 // the L2 error of sigma_yy along the section falls with every refinement.
 
 #include <deal.II/base/point.h>
-#include <deal.II/base/quadrature_lib.h>
-
-#include <deal.II/fe/fe_values.h>
 
 #include <hrcontact/postprocess/field_values.h>
 #include <hrcontact/postprocess/section_forces.h>
@@ -20,35 +17,6 @@
 #include "tests.h"
 
 using namespace hrcontact_tests;
-
-// The largest principal stress at the Gauss points of every cell, where the
-// cone is imposed, over the largest stress norm there (the scale of the
-// stress tolerance).
-double
-largest_gauss_point_stress(const hrcontact::Results<2> &res)
-{
-  const auto             &fe = *res.spaces.fe_stress;
-  const dealii::QGauss<2> points(2);
-  dealii::FEValues<2>     fv(fe, points, dealii::update_values);
-  dealii::Vector<double>  values(fe.n_dofs_per_cell());
-  double                  largest = -1e300, scale = 0;
-  for (const auto &cell : res.spaces.dof_handler_stress.active_cell_iterators())
-    {
-      fv.reinit(cell);
-      res.spaces.cell_values(cell, res.stress, values);
-      for (unsigned int t = 0; t < points.size(); ++t)
-        {
-          dealii::SymmetricTensor<2, 2> sigma;
-          for (unsigned int j = 0; j < values.size(); ++j)
-            sigma += values[j] * fv.shape_value(j, t) *
-                     hrcontact::MixedSpaces<2>::stress_basis_tensor(
-                       fe.system_to_component_index(j).first);
-          largest = std::max(largest, dealii::eigenvalues(sigma)[0]);
-          scale   = std::max(scale, sigma.norm());
-        }
-    }
-  return largest / scale;
-}
 
 int
 main()

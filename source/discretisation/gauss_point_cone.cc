@@ -93,7 +93,11 @@ namespace hrcontact
                                     SymmetricTensor<4, dim> *tangent) const
   {
     const auto [lambda, G] = lame(body);
-    constraint.elastic_projection(eps, lambda, G, sigma, tangent, nullptr);
+    if (barrier > 0)
+      constraint.barrier_projection(
+        eps, lambda, G, barrier, allowance, sigma, tangent, nullptr);
+    else
+      constraint.elastic_projection(eps, lambda, G, sigma, tangent, nullptr);
     if (tangent)
       {
         const auto I = unit_symmetric_tensor<dim>();
@@ -249,17 +253,21 @@ namespace hrcontact
     const FieldVector          &strain,
     StressConstraintField<dim> &field) const
   {
-    for_each_point({&strain},
-                   [&](const auto        &cell,
-                       const unsigned int t,
-                       const double,
-                       const std::vector<SymmetricTensor<2, dim>> &at) {
-                     const auto [lambda, G] = lame(cell->material_id());
-                     SymmetricTensor<2, dim> sigma, mu;
-                     constraint.elastic_projection(
-                       at[0], lambda, G, sigma, nullptr, &mu);
-                     field.set_multiplier(cell->active_cell_index(), t, mu);
-                   });
+    for_each_point(
+      {&strain},
+      [&](const auto        &cell,
+          const unsigned int t,
+          const double,
+          const std::vector<SymmetricTensor<2, dim>> &at) {
+        const auto [lambda, G] = lame(cell->material_id());
+        SymmetricTensor<2, dim> sigma, mu;
+        if (barrier > 0)
+          constraint.barrier_projection(
+            at[0], lambda, G, barrier, allowance, sigma, nullptr, &mu);
+        else
+          constraint.elastic_projection(at[0], lambda, G, sigma, nullptr, &mu);
+        field.set_multiplier(cell->active_cell_index(), t, mu);
+      });
   }
 
   template <int dim>

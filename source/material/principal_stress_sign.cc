@@ -205,6 +205,103 @@ namespace hrcontact
         }
   }
 
+  template <int dim>
+  void
+  PrincipalStressSign<dim>::barrier_projection(
+    const SymmetricTensor<2, dim> &eps,
+    const double                   lambda,
+    const double                   shear,
+    const double                   tau,
+    const double                   allowance,
+    SymmetricTensor<2, dim>       &sigma,
+    SymmetricTensor<4, dim>       *tangent,
+    SymmetricTensor<2, dim>       *fracture) const
+  {
+    // The cone shifted by the allowance: s sigma - allowance I in the cone
+    // is the unshifted barrier at the strain less C^{-1} allowance I.
+    const double G2 = 2 * shear;
+    const auto e = spectrum<dim>(sign * eps - allowance / (G2 + dim * lambda) *
+                                                unit_symmetric_tensor<dim>());
+    const double beta = lambda / (G2 + dim * lambda);
+    // With A = (I - beta 1 1^T) / 2G the stationarity A s - e - tau / s = 0
+    // reads s_i / 2G - tau / s_i = e_i + beta T / 2G, T = sum_j s_j: each
+    // s_i is the negative root of a quadratic in the trace T, and T solves
+    // one increasing scalar equation (Newton's method, from T = 0).
+    std::array<double, dim> s{}, ds{};
+    const auto              roots = [&](const double T) {
+      double sum = 0, slope = 0;
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          const double x = G2 * (e[i].first + beta * T / G2);
+          const double r = std::sqrt(x * x + 4 * G2 * tau);
+          // Without cancellation where the direction is open (x > 0).
+          s[i] = x < 0 ? 0.5 * (x - r) : -2 * G2 * tau / (x + r);
+          ds[i] =
+            0.5 * beta * (x < 0 ? 1 - x / r : 4 * G2 * tau / ((x + r) * r));
+          sum += s[i];
+          slope += ds[i];
+        }
+      return std::make_pair(T - sum, 1 - slope);
+    };
+    double T = 0;
+    for (unsigned int it = 0; it < 50; ++it)
+      {
+        const auto [f, df] = roots(T);
+        const double step  = f / df;
+        T -= step;
+        if (std::abs(step) <= 1e-15 * (std::abs(T) + std::sqrt(G2 * tau)))
+          break;
+      }
+    roots(T);
+    // d s / d e = H^{-1}, H = diag(1/2G + tau / s_i^2) - beta / 2G 1 1^T
+    // (Sherman-Morrison).
+    std::array<double, dim> d{};
+    double                  sum_d = 0;
+    for (unsigned int i = 0; i < dim; ++i)
+      {
+        d[i] = 1. / (1. / G2 + tau / (s[i] * s[i]));
+        sum_d += d[i];
+      }
+    const double c = (beta / G2) / (1 - (beta / G2) * sum_d);
+    const auto   J = [&](const unsigned int i, const unsigned int j) {
+      return (i == j ? d[i] : 0.) + c * d[i] * d[j];
+    };
+    std::array<SymmetricTensor<2, dim>, dim> N;
+    for (unsigned int i = 0; i < dim; ++i)
+      N[i] = symmetrize(outer_product(e[i].second, e[i].second));
+    sigma = 0;
+    for (unsigned int i = 0; i < dim; ++i)
+      sigma += (s[i] + allowance) * N[i];
+    sigma *= sign;
+    if (fracture)
+      {
+        *fracture = 0;
+        for (unsigned int i = 0; i < dim; ++i)
+          *fracture += (-tau / s[i]) * N[i];
+        *fracture *= sign;
+      }
+    if (!tangent)
+      return;
+    // The principal derivatives, then the spins.
+    *tangent     = 0;
+    double scale = 0;
+    for (unsigned int i = 0; i < dim; ++i)
+      scale = std::max(scale, std::abs(e[i].first));
+    for (unsigned int j = 0; j < dim; ++j)
+      for (unsigned int k = 0; k < dim; ++k)
+        *tangent += J(j, k) * outer_product(N[j], N[k]);
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i + 1; j < dim; ++j)
+        {
+          const double gap = e[i].first - e[j].first;
+          const double spin =
+            (gap > 1e-8 * scale) ? (s[i] - s[j]) / gap : J(i, i) - J(i, j);
+          const SymmetricTensor<2, dim> M =
+            symmetrize(outer_product(e[i].second, e[j].second)) * std::sqrt(2.);
+          *tangent += spin * outer_product(M, M);
+        }
+  }
+
   template class PrincipalStressSign<2>;
   template class PrincipalStressSign<3>;
 

@@ -22,6 +22,22 @@ namespace hrcontact
   }
 
   template <int dim>
+  void
+  StressConstraint<dim>::barrier_projection(const SymmetricTensor<2, dim> &,
+                                            const double,
+                                            const double,
+                                            const double,
+                                            const double,
+                                            SymmetricTensor<2, dim> &,
+                                            SymmetricTensor<4, dim> *,
+                                            SymmetricTensor<2, dim> *) const
+  {
+    throw InputError("Material/Admissible stresses = " + name() +
+                     ": this cone has no barrier; set Stress constraint "
+                     "iteration/Method = augmented Lagrangian.");
+  }
+
+  template <int dim>
   std::vector<typename StressConstraintFactory<dim>::Entry> &
   StressConstraintFactory<dim>::registry()
   {

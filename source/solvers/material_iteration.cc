@@ -68,12 +68,71 @@ namespace hrcontact
   }
 
   void
+  MaterialIteration::line_search(const Operations  &operations,
+                                 const FieldVector &previous,
+                                 FieldVector       &current,
+                                 std::ostream      &log)
+  {
+    // The exact line search along delta = current - previous.
+    FieldVector delta;
+    delta.reinit(current, true);
+    delta.copy_locally_owned_data_from(current);
+    delta.add(-1., previous);
+    double       curvature = 0;
+    const double slope_0 =
+      operations.energy_slope(previous, delta, 0., &curvature);
+    const auto derivative = [&](const double theta) {
+      return operations.energy_slope(previous, delta, theta, nullptr) -
+             slope_0 - curvature;
+    };
+    double       a = 0, fa = -curvature, b = 1, fb = derivative(1.);
+    double       theta = 1;
+    const double stop  = 1e-3 * std::abs(curvature);
+    if (fb > stop)
+      {
+        // Regula falsi (Illinois) on the increasing derivative.
+        int side = 0;
+        for (unsigned int k = 0; k < 30; ++k)
+          {
+            theta           = (a * fb - b * fa) / (fb - fa);
+            const double ft = derivative(theta);
+            if (std::abs(ft) <= stop)
+              break;
+            if (ft > 0)
+              {
+                b = theta, fb = ft;
+                if (side == -1)
+                  fa /= 2;
+                side = -1;
+              }
+            else
+              {
+                a = theta, fa = ft;
+                if (side == 1)
+                  fb /= 2;
+                side = 1;
+              }
+          }
+        log << "    line search: step " << std::setprecision(3) << theta
+            << std::setprecision(6) << std::endl;
+        current.sadd(theta, 1 - theta, previous);
+        current.update_ghost_values();
+      }
+  }
+
+  void
   MaterialIteration::solve(const Operations &operations, std::ostream &log)
   {
     changes.clear();
     steps            = 0;
     roundoff_limited = false;
     FieldVector previous, current;
+    bool        has_previous = operations.start != nullptr;
+    if (has_previous)
+      {
+        previous.reinit(*operations.start, true);
+        previous.copy_locally_owned_data_from(*operations.start);
+      }
     operations.solve();
     ++steps;
     operations.stresses(current);
@@ -85,7 +144,7 @@ namespace hrcontact
             "Material iteration: step " + std::to_string(steps) +
             " left non-finite stresses (the law's compliance is singular "
             "or the load exceeds what the material can carry).");
-        if (steps > 1)
+        if (has_previous)
           {
             const double change = operations.change ?
                                     operations.change(previous, current) :
@@ -127,55 +186,10 @@ namespace hrcontact
                  "the load is one the material can carry.";
             throw NotConvergedError(s.str());
           }
-        if (steps > 1 && operations.energy_slope)
-          {
-            // The exact line search along delta = current - previous.
-            FieldVector delta;
-            delta.reinit(current, true);
-            delta.copy_locally_owned_data_from(current);
-            delta.add(-1., previous);
-            double       curvature = 0;
-            const double slope_0 =
-              operations.energy_slope(previous, delta, 0., &curvature);
-            const auto derivative = [&](const double theta) {
-              return operations.energy_slope(previous, delta, theta, nullptr) -
-                     slope_0 - curvature;
-            };
-            double       a = 0, fa = -curvature, b = 1, fb = derivative(1.);
-            double       theta = 1;
-            const double stop  = 1e-3 * std::abs(curvature);
-            if (fb > stop)
-              {
-                // Regula falsi (Illinois) on the increasing derivative.
-                int side = 0;
-                for (unsigned int k = 0; k < 30; ++k)
-                  {
-                    theta           = (a * fb - b * fa) / (fb - fa);
-                    const double ft = derivative(theta);
-                    if (std::abs(ft) <= stop)
-                      break;
-                    if (ft > 0)
-                      {
-                        b = theta, fb = ft;
-                        if (side == -1)
-                          fa /= 2;
-                        side = -1;
-                      }
-                    else
-                      {
-                        a = theta, fa = ft;
-                        if (side == 1)
-                          fb /= 2;
-                        side = 1;
-                      }
-                  }
-                log << "    line search: step " << std::setprecision(3) << theta
-                    << std::setprecision(6) << std::endl;
-                current.sadd(theta, 1 - theta, previous);
-                current.update_ghost_values();
-              }
-          }
+        if (has_previous && operations.energy_slope)
+          line_search(operations, previous, current, log);
         operations.linearise_at(current);
+        has_previous = true;
         previous.reinit(current, true);
         previous.copy_locally_owned_data_from(current);
         operations.solve();

@@ -15,6 +15,7 @@ namespace hrcontact
   {
     MaterialIteration::declare_parameters(prm);
     StressConstraintIteration::declare_parameters(prm);
+    BarrierPath::declare_parameters(prm);
   }
 
   template <int dim>
@@ -23,6 +24,7 @@ namespace hrcontact
   {
     material_iteration.parse_parameters(prm);
     constraint_iteration.parse_parameters(prm);
+    barrier_path.parse_parameters(prm);
   }
 
   template <int dim>
@@ -37,8 +39,8 @@ namespace hrcontact
   MaterialLoop<dim>::projects_constraint(const Scene<dim> &scene) const
   {
     return scene.stress_constraint &&
-           constraint_iteration.method ==
-             StressConstraintIteration::Method::closed_form_projection;
+           constraint_iteration.method !=
+             StressConstraintIteration::Method::augmented_lagrangian;
   }
 
   template <int dim>
@@ -70,8 +72,8 @@ namespace hrcontact
     };
     if (r.scene.stress_constraint)
       {
-        if (constraint_iteration.method ==
-            StressConstraintIteration::Method::closed_form_projection)
+        if (constraint_iteration.method !=
+            StressConstraintIteration::Method::augmented_lagrangian)
           run_projected(system, path, operations, r, log);
         else
           run_constrained(system, path, operations, r, log);
@@ -188,11 +190,14 @@ namespace hrcontact
                                    Results<dim>                 &r,
                                    std::ostream                 &log)
   {
+    const bool interior = constraint_iteration.method ==
+                          StressConstraintIteration::Method::interior_point;
     cone = std::make_unique<GaussPointCone<dim>>(
       *r.scene.stress_constraint,
       r.scene,
       r.spaces,
-      constraint_iteration.residual_stiffness);
+      interior ? barrier_path.residual_stiffness :
+                 constraint_iteration.residual_stiffness);
     HRAssembler<dim> assembler(r.scene, r.spaces);
     assembler.cone = cone.get();
     // The state: the point strains of the last step (zero: the first step
@@ -257,7 +262,15 @@ namespace hrcontact
     material_iteration.state_name   = "model stress";
     material_iteration.relative_tolerance =
       constraint_iteration.stress_tolerance;
-    solve_material_iteration(operations, r, log);
+    if (interior)
+      run_barrier_path(operations,
+                       state,
+                       elastic_stress,
+                       start.size() == state.size(),
+                       r,
+                       log);
+    else
+      solve_material_iteration(operations, r, log);
     material_iteration.state_name         = "stress";
     material_iteration.relative_tolerance = material_tolerance;
     constraint_field = std::make_unique<StressConstraintField<dim>>(
@@ -274,6 +287,50 @@ namespace hrcontact
     log << "  stress constraint: " << r.material.newton_steps
         << " material Newton steps, cracked fraction "
         << r.stress_constraint.cracked_fraction << std::endl;
+  }
+
+  template <int dim>
+  void
+  MaterialLoop<dim>::run_barrier_path(
+    const MaterialIteration::Operations &operations,
+    FieldVector                         &state,
+    const double                        &elastic_stress,
+    const bool                           carried,
+    Results<dim>                        &r,
+    std::ostream                        &log)
+  {
+    // The elastic step (zero strain, no barrier: the elastic tangent),
+    // or one from a coarser level's strains, sets the barrier's scale
+    // s^2 / E.
+    FieldVector last;
+    operations.solve();
+    r.material.newton_steps += 1;
+    operations.stresses(last);
+    const LinearElasticity<dim> *elastic = r.scene.material->elastic_part();
+    const double                 unit    = elastic_stress * elastic_stress /
+                        (elastic ? elastic->youngs_modulus() : 1.);
+    MaterialIteration::Operations staged = operations;
+    staged.start                         = &state;
+    staged.stresses                      = [&](FieldVector &eps) {
+      operations.stresses(eps);
+      last.reinit(eps, true);
+      last.copy_locally_owned_data_from(eps);
+      last.update_ghost_values();
+    };
+    barrier_path.run(
+      [&](const double t) {
+        cone->barrier   = t * unit;
+        cone->allowance = barrier_path.allowance * elastic_stress;
+        operations.linearise_at(last);
+      },
+      [&](const double tolerance) {
+        material_iteration.relative_tolerance = tolerance;
+        solve_material_iteration(staged, r, log);
+        return material_iteration.n_steps();
+      },
+      constraint_iteration.stress_tolerance,
+      carried,
+      log);
   }
 
   template class MaterialLoop<2>;

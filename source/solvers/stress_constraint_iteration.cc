@@ -17,7 +17,8 @@ namespace hrcontact
     prm.declare_entry(
       "Method",
       "augmented Lagrangian",
-      Patterns::Selection("augmented Lagrangian|closed-form projection"),
+      Patterns::Selection(
+        "augmented Lagrangian|closed-form projection|interior point"),
       "How Material/Admissible stresses is imposed. augmented Lagrangian: "
       "the paper's Steps 1-6 with multipliers at the Constraint points "
       "below (any law, e.g. Ramberg-Osgood). closed-form projection: at "
@@ -29,7 +30,9 @@ namespace hrcontact
       "homogeneous states, but where the strains that minimise the energy "
       "are not finite (crack fronts under a point load, an arch near its "
       "hinges) it creeps instead of converging: doc/materials.md measures "
-      "both.");
+      "both. interior point: the same points and unknowns, the cone's log "
+      "barrier driven to zero (BarrierPath): every stress strictly inside "
+      "the cone, each barrier value a smooth strictly convex problem.");
     prm.declare_entry(
       "Stress tolerance",
       "1e-6",
@@ -106,7 +109,8 @@ namespace hrcontact
       prm,
       "Method",
       {{"augmented Lagrangian", Method::augmented_lagrangian},
-                   {"closed-form projection", Method::closed_form_projection}});
+                   {"closed-form projection", Method::closed_form_projection},
+                   {"interior point", Method::interior_point}});
     residual_stiffness = prm.get_double("Residual stiffness");
     stress_tolerance   = prm.get_double("Stress tolerance");
     prm.leave_subsection();

@@ -111,6 +111,11 @@ namespace hrcontact
 
     const StressConstraint<dim> &constraint;
     double                       residual_stiffness;
+    /** tau of the log barrier (Method = interior point, BarrierPath); 0:
+     * the closed-form projection. */
+    double barrier = 0;
+    /** The principal stress of the wrong sign the barrier allows. */
+    double allowance = 0;
 
   private:
     /** In-plane Lame constants of the body's elastic law. */

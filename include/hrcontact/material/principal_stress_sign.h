@@ -70,6 +70,24 @@ namespace hrcontact
       dealii::SymmetricTensor<2, dim>       &sigma,
       dealii::SymmetricTensor<4, dim>       *tangent,
       dealii::SymmetricTensor<2, dim>       *fracture) const override;
+    /**
+     * In the same principal frame the barrier stress is coaxial with eps:
+     * its principal values s_i < 0 minimise s.A s / 2 - e.s - tau sum_i
+     * log(-s_i) (A = C^{-1} in the frame), found by Newton's method kept
+     * inside by a fraction-to-boundary rule, and mu_i = tau / (-s_i). The
+     * tangent is the inverse Hessian on the principal values plus the
+     * spins, as for elastic_projection.
+     */
+    void
+    barrier_projection(
+      const dealii::SymmetricTensor<2, dim> &eps,
+      const double                           lambda,
+      const double                           shear,
+      const double                           tau,
+      const double                           allowance,
+      dealii::SymmetricTensor<2, dim>       &sigma,
+      dealii::SymmetricTensor<4, dim>       *tangent,
+      dealii::SymmetricTensor<2, dim>       *fracture) const override;
 
   private:
     const double sign;

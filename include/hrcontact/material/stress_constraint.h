@@ -102,6 +102,27 @@ namespace hrcontact
                        dealii::SymmetricTensor<2, dim>       &sigma,
                        dealii::SymmetricTensor<4, dim>       *tangent,
                        dealii::SymmetricTensor<2, dim>       *fracture) const;
+
+    /**
+     * The cone's log-barrier smoothing at one point (Method = interior
+     * point): the stress of the strain eps when the complementary energy
+     * of the point gains -tau log det(-s sigma) (s = +1 for no tension),
+     * sigma = argmax over the interior of K of sigma : eps - sigma : C^{-1}
+     * sigma / 2 + tau log det(-s sigma). Strictly inside K, smooth, with a
+     * positive definite tangent; the fracture strain mu = eps - C^{-1}
+     * sigma = -tau sigma^{-1} misses mu : sigma = 0 by tau per direction
+     * (the duality gap). tau -> 0 gives elastic_projection. The default
+     * refuses, like elastic_projection.
+     */
+    virtual void
+    barrier_projection(const dealii::SymmetricTensor<2, dim> &eps,
+                       const double                           lambda,
+                       const double                           shear,
+                       const double                           tau,
+                       const double                           allowance,
+                       dealii::SymmetricTensor<2, dim>       &sigma,
+                       dealii::SymmetricTensor<4, dim>       *tangent,
+                       dealii::SymmetricTensor<2, dim>       *fracture) const;
   };
 
   /**

@@ -75,6 +75,13 @@ namespace hrcontact
        * entry relative to the largest entry.
        */
       std::function<double(const FieldVector &, const FieldVector &)> change;
+      /**
+       * Optional: the state the first solve's linearisation was built at
+       * (a continuation: BarrierPath). With it the first step is measured
+       * and damped like the others; without it the first step is the
+       * elastic one and only starts the iteration.
+       */
+      const FieldVector *start = nullptr;
     };
 
     /**
@@ -126,6 +133,14 @@ namespace hrcontact
     unsigned int maximum_steps    = 100;
 
   private:
+    /** Damps the step from previous to current by the exact line search
+     * (above). */
+    static void
+    line_search(const Operations  &operations,
+                const FieldVector &previous,
+                FieldVector       &current,
+                std::ostream      &log);
+
     std::vector<double> changes;
     unsigned int        steps            = 0;
     bool                roundoff_limited = false;

@@ -6,6 +6,7 @@
 #include <hrcontact/core/results.h>
 #include <hrcontact/discretisation/gauss_point_cone.h>
 #include <hrcontact/discretisation/stress_constraint_field.h>
+#include <hrcontact/solvers/barrier_path.h>
 #include <hrcontact/solvers/material_iteration.h>
 #include <hrcontact/solvers/newton_step_path.h>
 #include <hrcontact/solvers/stress_constraint_iteration.h>
@@ -88,7 +89,22 @@ namespace hrcontact
                   Results<dim>                 &results,
                   std::ostream                 &log);
 
+    /**
+     * run_projected's iteration for Method = interior point: the elastic
+     * step (or one from a coarser level's strains, @p carried) sets the
+     * scale @p elastic_stress, then BarrierPath's stages, each Newton's
+     * method from the last one's strains.
+     */
+    void
+    run_barrier_path(const MaterialIteration::Operations &operations,
+                     FieldVector                         &state,
+                     const double                        &elastic_stress,
+                     const bool                           carried,
+                     Results<dim>                        &results,
+                     std::ostream                        &log);
+
     StressConstraintIteration                   constraint_iteration;
+    BarrierPath                                 barrier_path;
     std::unique_ptr<StressConstraintField<dim>> constraint_field;
     std::unique_ptr<GaussPointCone<dim>>        cone;
   };

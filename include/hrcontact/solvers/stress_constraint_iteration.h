@@ -108,7 +108,9 @@ namespace hrcontact
       /** This class: multipliers at the Constraint points. */
       augmented_lagrangian,
       /** GaussPointCone: in closed form at the Gauss points. */
-      closed_form_projection
+      closed_form_projection,
+      /** GaussPointCone with a log barrier driven to zero (BarrierPath). */
+      interior_point
     };
     Method method = Method::augmented_lagrangian;
     /** The closed-form projection's residual stiffness (GaussPointCone). */
