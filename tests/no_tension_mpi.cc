@@ -8,7 +8,8 @@
 // (1e-8: 115 semismooth steps carry the round-off of the two partitions
 // further than a smooth law's), the same stress error against the closed
 // form, fracture strain and cracked fraction (1e-9) and the same base
-// reaction (1e-10).
+// reaction (1e-10). The same for the barrier path (Method = interior
+// point).
 
 #include <deal.II/base/mpi.h>
 
@@ -18,56 +19,76 @@
 
 using namespace hrcontact_tests;
 
+namespace
+{
+  /** The manufactured pier with @p extra, on every process and serially. */
+  void
+  compare(const std::string &extra, const std::string &tag)
+  {
+    // Each serial run writes its summary into a directory of its own.
+    const auto text = [&](const std::string &directory) {
+      return read_file(std::string(SOURCE_DIR) +
+                       "/../parameters/no-tension-manufactured-pier.prm") +
+             extra +
+             "subsection Geometry\n  set Global refinements = 3\nend\n"
+             "subsection Output\n  set Write solution = false\n"
+             "  set Output directory = " +
+             directory + "\nend\n";
+    };
+    const unsigned int rank =
+      dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const auto parallel =
+      solve_from_text<2>(text("results" + tag), MPI_COMM_WORLD);
+    const auto  serial = solve_from_text<2>(text("results" + tag + "-serial-" +
+                                                std::to_string(rank)),
+                                           MPI_COMM_SELF);
+    const auto &P = parallel->results(), &S = serial->results();
+    const bool  distributed =
+      dynamic_cast<const dealii::parallel::distributed::Triangulation<2> *>(
+        &P.triangulation()) != nullptr;
+    double history = history_difference(P.material.changes, S.material.changes);
+    std::ostringstream quiet;
+    parallel->output_results(quiet);
+    serial->output_results(quiet);
+    const auto relative = [&](const std::string &key) {
+      const double p = P.summary.get_double(key), s = S.summary.get_double(key);
+      return std::abs(p - s) / std::max(std::abs(s), 1e-300);
+    };
+    double fields   = std::max({relative("stress_error_l2"),
+                                relative("stress_error_max"),
+                                relative("largest_fracture_strain"),
+                                relative("cracked_area_fraction")});
+    double reaction = relative("total_reaction_y");
+    history         = dealii::Utilities::MPI::max(history, MPI_COMM_WORLD);
+    fields          = dealii::Utilities::MPI::max(fields, MPI_COMM_WORLD);
+    reaction        = dealii::Utilities::MPI::max(reaction, MPI_COMM_WORLD);
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << (distributed ? "distributed" : "serial (WRONG)")
+                << " mesh on "
+                << dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
+                << " processes, the same Newton steps: "
+                << (P.material.newton_steps == S.material.newton_steps ? "yes" :
+                                                                         "NO")
+                << "\n  model stress errors step by step agree to 1e-8: "
+                << check(history, 1e-8)
+                << "\n  stress errors, fracture strain, cracked fraction agree "
+                   "to 1e-9: "
+                << check(fields, 1e-9) << "\n  base reactions agree to 1e-10: "
+                << check(reaction, 1e-10) << std::endl;
+  }
+} // namespace
+
 int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  // Each serial run writes its summary into a directory of its own.
-  const auto text = [](const std::string &directory) {
-    return read_file(std::string(SOURCE_DIR) +
-                     "/../parameters/no-tension-manufactured-pier.prm") +
-           "subsection Geometry\n  set Global refinements = 3\nend\n"
-           "subsection Output\n  set Write solution = false\n"
-           "  set Output directory = " +
-           directory + "\nend\n";
-  };
-  const unsigned int rank =
-    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  const auto parallel = solve_from_text<2>(text("results"), MPI_COMM_WORLD);
-  const auto serial =
-    solve_from_text<2>(text("results-serial-" + std::to_string(rank)),
-                       MPI_COMM_SELF);
-  const auto &P = parallel->results(), &S = serial->results();
-  const bool  distributed =
-    dynamic_cast<const dealii::parallel::distributed::Triangulation<2> *>(
-      &P.triangulation()) != nullptr;
-  double history = history_difference(P.material.changes, S.material.changes);
-  std::ostringstream quiet;
-  parallel->output_results(quiet);
-  serial->output_results(quiet);
-  const auto relative = [&](const std::string &key) {
-    const double p = P.summary.get_double(key), s = S.summary.get_double(key);
-    return std::abs(p - s) / std::max(std::abs(s), 1e-300);
-  };
-  double fields   = std::max({relative("stress_error_l2"),
-                              relative("stress_error_max"),
-                              relative("largest_fracture_strain"),
-                              relative("cracked_area_fraction")});
-  double reaction = relative("total_reaction_y");
-  history         = dealii::Utilities::MPI::max(history, MPI_COMM_WORLD);
-  fields          = dealii::Utilities::MPI::max(fields, MPI_COMM_WORLD);
-  reaction        = dealii::Utilities::MPI::max(reaction, MPI_COMM_WORLD);
+  compare("", "");
+  // The barrier path (Method = interior point): its stages and line
+  // searches reduce over the processes too.
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    std::cout << (distributed ? "distributed" : "serial (WRONG)") << " mesh on "
-              << dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
-              << " processes, the same Newton steps: "
-              << (P.material.newton_steps == S.material.newton_steps ? "yes" :
-                                                                       "NO")
-              << "\n  model stress errors step by step agree to 1e-8: "
-              << check(history, 1e-8)
-              << "\n  stress errors, fracture strain, cracked fraction agree "
-                 "to 1e-9: "
-              << check(fields, 1e-9)
-              << "\n  base reactions agree to 1e-10: " << check(reaction, 1e-10)
-              << std::endl;
+    std::cout << "Method = interior point:" << std::endl;
+  compare("subsection Stress constraint iteration\n"
+          "  set Method = interior point\n  set Stress tolerance = 1e-4\n"
+          "end\n",
+          "-interior");
 }
