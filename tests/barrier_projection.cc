@@ -23,12 +23,9 @@ template <int dim>
 void
 run(const std::string &name, const double sign, const std::string &plane)
 {
-  const double E = 1000, nu = 0.3;
-  const double G      = E / (2 * (1 + nu));
-  double       lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-  if (plane == "plane stress")
-    lambda = 2 * lambda * G / (lambda + 2 * G);
-  const auto cone = hrcontact_tests::make_stress_constraint<dim>(name);
+  const double E         = 1000;
+  const auto [lambda, G] = hrcontact_tests::test_lame_constants(plane);
+  const auto cone        = hrcontact_tests::make_stress_constraint<dim>(name);
   std::cout << dim << "D '" << name << "'"
             << (dim == 2 ? " (" + plane + ")" : "") << std::endl;
   const auto I = unit_symmetric_tensor<dim>();

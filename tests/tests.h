@@ -525,6 +525,21 @@ namespace hrcontact_tests
     return hrcontact::StressConstraintFactory<dim>::create(prm);
   }
 
+  /**
+   * The in-plane Lame constants (lambda, G) of E = 1000, nu = 0.3, which
+   * the point-law tests use: plane stress reduces lambda.
+   */
+  inline std::pair<double, double>
+  test_lame_constants(const std::string &plane)
+  {
+    const double E = 1000, nu = 0.3;
+    const double G      = E / (2 * (1 + nu));
+    double       lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+    if (plane == "plane stress")
+      lambda = 2 * lambda * G / (lambda + 2 * G);
+    return {lambda, G};
+  }
+
   /** max |a_k - b_k| of two step histories; 1 if their lengths differ. */
   inline double
   history_difference(const std::vector<double> &a, const std::vector<double> &b)

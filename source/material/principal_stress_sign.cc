@@ -19,6 +19,35 @@ namespace hrcontact
     }
   } // namespace
 
+  namespace
+  {
+    /**
+     * The spins of an isotropic function of a symmetric tensor: (s_i -
+     * s_j) / (e_i - e_j) on each pair of principal directions, @p coincide
+     * (i, j) where the gap is below @p small.
+     */
+    template <int dim, typename Limit>
+    void
+    add_spins(const std::array<std::pair<double, Tensor<1, dim>>, dim> &e,
+              const std::array<double, dim>                            &s,
+              const double                                              small,
+              SymmetricTensor<4, dim>                                  &tangent,
+              const Limit &coincide)
+    {
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i + 1; j < dim; ++j)
+          {
+            const double gap = e[i].first - e[j].first;
+            const double spin =
+              (gap > small) ? (s[i] - s[j]) / gap : coincide(i, j);
+            const SymmetricTensor<2, dim> M =
+              symmetrize(outer_product(e[i].second, e[j].second)) *
+              std::sqrt(2.);
+            tangent += spin * outer_product(M, M);
+          }
+    }
+  } // namespace
+
   template <int dim>
   PrincipalStressSign<dim>::PrincipalStressSign(const double sign)
     : sign(sign)
@@ -190,19 +219,14 @@ namespace hrcontact
       for (unsigned int k = cracked; k < dim; ++k)
         *tangent +=
           (lambda_open + (j == k ? G2 : 0.)) * outer_product(N[j], N[k]);
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = i + 1; j < dim; ++j)
-        {
-          const double gap = e[i].first - e[j].first;
-          double       spin;
-          if (gap > 1e-12 * scale)
-            spin = (s[i] - s[j]) / gap;
-          else
-            spin = (i >= cracked) ? G2 : 0.; // both closed: elastic
-          const SymmetricTensor<2, dim> M =
-            symmetrize(outer_product(e[i].second, e[j].second)) * std::sqrt(2.);
-          *tangent += spin * outer_product(M, M);
-        }
+    // Where two strains coincide: both closed is elastic, else no stiffness.
+    add_spins<dim>(e,
+                   s,
+                   1e-12 * scale,
+                   *tangent,
+                   [&](const unsigned int i, const unsigned int) {
+                     return (i >= cracked) ? G2 : 0.;
+                   });
   }
 
   template <int dim>
@@ -290,16 +314,14 @@ namespace hrcontact
     for (unsigned int j = 0; j < dim; ++j)
       for (unsigned int k = 0; k < dim; ++k)
         *tangent += J(j, k) * outer_product(N[j], N[k]);
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = i + 1; j < dim; ++j)
-        {
-          const double gap = e[i].first - e[j].first;
-          const double spin =
-            (gap > 1e-8 * scale) ? (s[i] - s[j]) / gap : J(i, i) - J(i, j);
-          const SymmetricTensor<2, dim> M =
-            symmetrize(outer_product(e[i].second, e[j].second)) * std::sqrt(2.);
-          *tangent += spin * outer_product(M, M);
-        }
+    // Where two strains coincide, the limit of the divided difference.
+    add_spins<dim>(e,
+                   s,
+                   1e-8 * scale,
+                   *tangent,
+                   [&](const unsigned int i, const unsigned int j) {
+                     return J(i, i) - J(i, j);
+                   });
   }
 
   template class PrincipalStressSign<2>;

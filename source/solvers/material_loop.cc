@@ -241,15 +241,10 @@ namespace hrcontact
       // The barrier's cracked strips legitimately open to about 1 /
       // allowance (run_barrier_path): there only round-off limits them.
       if (growth > (interior ? 1e8 : 1e4))
-        throw NotConvergedError(
-          "Material/Admissible stresses = " +
-          r.scene.stress_constraint->name() +
-          ": no admissible stress field carries this load (the strains "
-          "grew to " +
-          std::to_string(growth) +
-          " times the elastic ones as the cracks opened a mechanism, "
-          "material step " +
-          std::to_string(material_iteration.n_steps()) + ").");
+        throw no_admissible_field(
+          r.scene,
+          growth,
+          "material step " + std::to_string(material_iteration.n_steps()));
     };
     operations.energy_slope = [&](const FieldVector &eps0,
                                   const FieldVector &delta,
@@ -292,6 +287,20 @@ namespace hrcontact
     log << "  stress constraint: " << r.material.newton_steps
         << " material Newton steps, cracked fraction "
         << r.stress_constraint.cracked_fraction << std::endl;
+  }
+
+  template <int dim>
+  NotConvergedError
+  MaterialLoop<dim>::no_admissible_field(const Scene<dim>  &scene,
+                                         const double       growth,
+                                         const std::string &when)
+  {
+    return NotConvergedError(
+      "Material/Admissible stresses = " + scene.stress_constraint->name() +
+      ": no admissible stress field carries this load (the strains grew to " +
+      std::to_string(growth) +
+      " times the elastic ones as the cracks opened a mechanism, " + when +
+      ").");
   }
 
   template <int dim>
@@ -342,15 +351,9 @@ namespace hrcontact
             // iteration, the Newton steps) gives up.
             if (growth <= 1e4)
               throw;
-            throw NotConvergedError(
-              "Material/Admissible stresses = " +
-              r.scene.stress_constraint->name() +
-              ": no admissible stress field carries this load (the "
-              "strains grew to " +
-              std::to_string(growth) +
-              " times the elastic ones as the cracks opened a mechanism, "
-              "then: " +
-              e.what() + ")");
+            throw no_admissible_field(r.scene,
+                                      growth,
+                                      std::string("then: ") + e.what());
           }
         return material_iteration.n_steps();
       },

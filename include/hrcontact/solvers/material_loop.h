@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <hrcontact/core/input.h>
 #include <hrcontact/core/results.h>
 #include <hrcontact/discretisation/gauss_point_cone.h>
 #include <hrcontact/discretisation/stress_constraint_field.h>
@@ -105,6 +106,13 @@ namespace hrcontact
                      const bool                           carried,
                      Results<dim>                        &results,
                      std::ostream                        &log);
+
+    /** The error that names a load no admissible stress field carries,
+     * the strains having grown @p growth times the elastic ones. */
+    static NotConvergedError
+    no_admissible_field(const Scene<dim>  &scene,
+                        const double       growth,
+                        const std::string &when);
 
     StressConstraintIteration                   constraint_iteration;
     BarrierPath                                 barrier_path;
