@@ -540,6 +540,26 @@ namespace hrcontact_tests
     return {lambda, G};
   }
 
+  /**
+   * The manufactured no-tension pier's text (parameters/no-tension-
+   * manufactured-pier.prm) turned into its no-compression mirror: the top
+   * pulled by the same triangle, the base held both ways instead of
+   * @p support (a membrane is not pushed by a foundation), no obstacle.
+   */
+  inline std::string
+  no_compression_mirror(std::string text, const std::string &support)
+  {
+    for (const auto &[from, to] :
+         std::vector<std::pair<std::string, std::string>>{
+           {"= no tension", "= no compression"},
+           {"3: 0; -q*", "3: 0; q*"},
+           {"Reference stress = 0; -q*", "Reference stress = 0; q*"},
+           {support, "Prescribed displacements = 2: 0; 0"},
+           {"set Obstacles = 2: 0, 0 : 0, -1", ""}})
+      text.replace(text.find(from), from.size(), to);
+    return text;
+  }
+
   /** max |a_k - b_k| of two step histories; 1 if their lengths differ. */
   inline double
   history_difference(const std::vector<double> &a, const std::vector<double> &b)

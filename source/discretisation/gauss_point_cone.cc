@@ -33,8 +33,8 @@ namespace hrcontact
     if (spaces.has_parameters() || spaces.stress_element_name != "DGQ1" ||
         base.n_dofs_per_cell() != points.size())
       throw InputError(
-        "Stress constraint iteration/Method = closed-form projection needs "
-        "Equilibrium reduction/Stress element = DGQ1 (its values at the "
+        "Stress constraint iteration/Method = closed-form projection and "
+        "interior point need Finite elements/Stress element = DGQ1 (its values at the "
         "2^dim Gauss points are its unknowns); '" +
         spaces.stress_element_name +
         "' is not that: set Method = augmented Lagrangian.");
@@ -59,9 +59,9 @@ namespace hrcontact
     const LinearElasticity<dim> *elastic = law.elastic_part();
     if (!elastic || !law.is_linear())
       throw InputError(
-        "Stress constraint iteration/Method = closed-form projection needs "
-        "a linear elastic material (the projection onto the cone is in "
-        "closed form for it); for Ramberg-Osgood set Method = augmented "
+        "Stress constraint iteration/Method = closed-form projection and "
+        "interior point need a linear elastic material (the projection onto "
+        "the cone and its barrier are in closed form for it); for Ramberg-Osgood set Method = augmented "
         "Lagrangian.");
     const double E = elastic->youngs_modulus(), nu = elastic->poisson_ratio();
     const double G      = E / (2 * (1 + nu));

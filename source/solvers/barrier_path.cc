@@ -87,7 +87,6 @@ namespace hrcontact
                    const bool    carried,
                    std::ostream &log)
   {
-    stage_steps.clear();
     double t = carried ? final_barrier : initial_barrier;
     while (true)
       {
@@ -96,7 +95,6 @@ namespace hrcontact
         const double tolerance =
           last ? stress_tolerance : std::max(stress_tolerance, stage_tolerance);
         const unsigned int steps = solve_stage(tolerance);
-        stage_steps.push_back(steps);
         log << "  barrier " << std::scientific << std::setprecision(1) << t
             << std::defaultfloat << std::setprecision(6) << ": " << steps
             << " Newton steps" << std::endl;

@@ -43,7 +43,9 @@ namespace hrcontact
       "Near crack fronts and in cracked regions the strains that minimise "
       "the energy need not be finite, so the iteration converges there in "
       "stresses only, linearly (doc/materials.md measures the steps per "
-      "tolerance).");
+      "tolerance). interior point: the same measure for the last barrier "
+      "stage (1e-4 gives the stresses of 1e-6 to six digits there, "
+      "doc/materials.md).");
     prm.declare_entry(
       "Residual stiffness",
       "1e-4",

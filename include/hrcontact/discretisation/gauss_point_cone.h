@@ -43,6 +43,10 @@ namespace hrcontact
    * open in every direction (D_q = 0); it enters the tangent only, so the
    * converged stresses do not depend on it.
    *
+   * With barrier > 0 (Method = interior point, BarrierPath) the point law
+   * is the cone's log barrier instead (StressConstraint::
+   * barrier_projection), smooth; the rest is unchanged.
+   *
    * The state is a strain field in the stress unknowns' DGQ1 space (its
    * values at the Gauss points are the point strains), so that it lives,
    * is ghosted and is carried to a finer mesh like the stresses.

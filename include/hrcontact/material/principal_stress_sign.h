@@ -71,12 +71,14 @@ namespace hrcontact
       dealii::SymmetricTensor<4, dim>       *tangent,
       dealii::SymmetricTensor<2, dim>       *fracture) const override;
     /**
-     * In the same principal frame the barrier stress is coaxial with eps:
-     * its principal values s_i < 0 minimise s.A s / 2 - e.s - tau sum_i
-     * log(-s_i) (A = C^{-1} in the frame), found by Newton's method kept
-     * inside by a fraction-to-boundary rule, and mu_i = tau / (-s_i). The
-     * tangent is the inverse Hessian on the principal values plus the
-     * spins, as for elastic_projection.
+     * In the principal frame of s eps (less C^{-1} allowance I) the
+     * barrier stress is coaxial with it: its shifted principal values s_i
+     * < 0 minimise s.A s / 2 - e.s - tau sum_i log(-s_i) (A = C^{-1} in the
+     * frame). Each s_i is the negative root of a quadratic in the trace,
+     * which solves one increasing scalar equation (Newton's method), and
+     * mu_i = tau / (-s_i). The tangent is the inverse Hessian on the
+     * principal values (Sherman-Morrison) plus the spins, as for
+     * elastic_projection.
      */
     void
     barrier_projection(

@@ -106,13 +106,15 @@ namespace hrcontact
     /**
      * The cone's log-barrier smoothing at one point (Method = interior
      * point): the stress of the strain eps when the complementary energy
-     * of the point gains -tau log det(-s sigma) (s = +1 for no tension),
-     * sigma = argmax over the interior of K of sigma : eps - sigma : C^{-1}
-     * sigma / 2 + tau log det(-s sigma). Strictly inside K, smooth, with a
-     * positive definite tangent; the fracture strain mu = eps - C^{-1}
-     * sigma = -tau sigma^{-1} misses mu : sigma = 0 by tau per direction
-     * (the duality gap). tau -> 0 gives elastic_projection. The default
-     * refuses, like elastic_projection.
+     * of the point gains -tau log det(allowance I - s sigma) (s = +1 for
+     * no tension), the cone shifted by @p allowance of wrong-sign stress:
+     * sigma = argmax of sigma : eps - sigma : C^{-1} sigma / 2 + tau log
+     * det(allowance I - s sigma). Strictly inside the shifted cone, smooth,
+     * with a positive definite tangent; the fracture strain mu = eps -
+     * C^{-1} sigma meets (s sigma - allowance I)(s mu) = -tau I, missing
+     * complementarity by tau per direction (the duality gap). tau,
+     * allowance -> 0 give elastic_projection. The default refuses, like
+     * elastic_projection.
      */
     virtual void
     barrier_projection(const dealii::SymmetricTensor<2, dim> &eps,

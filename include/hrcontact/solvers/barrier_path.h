@@ -5,7 +5,6 @@
 
 #include <functional>
 #include <ostream>
-#include <vector>
 
 namespace hrcontact
 {
@@ -14,16 +13,17 @@ namespace hrcontact
    * (Stress constraint iteration/Method = interior point, doc/materials.md).
    *
    * Each point's complementary energy gains the cone's log barrier -tau log
-   * det(-sigma) (StressConstraint::barrier_projection). For tau > 0 the
-   * point law is smooth and strictly monotone, so the displacement problem
-   * is smooth and strictly convex and Newton's method converges on it
-   * quadratically, with no residual stiffness and every stress strictly
-   * inside the cone. Its answer misses the constrained one by at most the
-   * duality gap, tau per direction and unit volume (sigma : mu = -dim tau
-   * at every point). The path drives tau to zero: Initial barrier, times
-   * Barrier reduction per stage, each stage Newton's method from the last
-   * one's strains, to Final barrier, where the stage is solved to Stress
-   * tolerance. tau is in units of s^2 / E, s the largest stress of the
+   * det(delta I - s sigma) (StressConstraint::barrier_projection, delta the
+   * Tension allowance). For tau > 0 the point law is smooth and strictly
+   * monotone, so the displacement problem is smooth and strictly convex and
+   * Newton's method converges on it quadratically (the Barrier residual
+   * stiffness, in the tangent only, just keeps the solves regular), every
+   * stress strictly inside the shifted cone. Its answer misses the constrained
+   * one by at most the duality gap, tau per direction and unit volume (sigma :
+   * mu = -dim tau at every point). The path drives tau to zero: Initial
+   * barrier, times Barrier reduction per stage, each stage Newton's method from
+   * the last one's strains, to Final barrier, where the stage is solved to
+   * Stress tolerance. tau is in units of s^2 / E, s the largest stress of the
    * elastic step.
    */
   class BarrierPath
@@ -46,9 +46,6 @@ namespace hrcontact
         const double                                     stress_tolerance,
         const bool                                       carried,
         std::ostream                                    &log);
-
-    /** The Newton steps of each stage of the last run. */
-    std::vector<unsigned int> stage_steps;
 
     double initial_barrier = 1e-2;
     double reduction       = 0.1;
