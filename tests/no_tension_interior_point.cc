@@ -52,7 +52,9 @@ main()
                 << check(res.summary.get_double("stress_error_max"), 4e-3)
                 << "\n  tension at any Gauss point below 1.01e-4 of the "
                    "largest stress: "
-                << check(largest_gauss_point_stress(res), 1.01e-4) << std::endl;
+                << check(largest_gauss_point_stress(res), 1.01e-4)
+                << "\n  summary.txt: stress_constraint_method = "
+                << res.summary.get("stress_constraint_method") << std::endl;
     }
   const auto [fewest, most] = std::minmax_element(steps.begin(), steps.end());
   std::cout << "Newton steps from 4 to 16 cells across within a factor 1.5: "

@@ -137,10 +137,11 @@ namespace hrcontact
     if (!r.scene.stress_constraint)
       return;
     summary.add("stress_constraint", r.scene.stress_constraint->name());
-    // The closed-form projection has no multiplier updates (its
+    // The Gauss-point methods have no multiplier updates (their
     // convergence is material_stress_change, the model's stress error).
     if (r.stress_constraint.residuals.empty())
-      summary.add("stress_constraint_method", "closed-form projection");
+      summary.add("stress_constraint_method",
+                  r.stress_constraint.gauss_point_method);
     else
       {
         summary.add("stress_constraint_updates",

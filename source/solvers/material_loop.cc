@@ -192,6 +192,8 @@ namespace hrcontact
   {
     const bool interior = constraint_iteration.method ==
                           StressConstraintIteration::Method::interior_point;
+    r.stress_constraint.gauss_point_method =
+      interior ? "interior point" : "closed-form projection";
     cone = std::make_unique<GaussPointCone<dim>>(
       *r.scene.stress_constraint,
       r.scene,

@@ -197,6 +197,9 @@ namespace hrcontact
        * stress unknowns' DGQ1 space), and the ones its iteration starts
        * from (a coarser level's, prolongated; empty: the elastic step). */
       FieldVector point_strains, start_point_strains;
+      /** The Gauss-point method that solved it ("closed-form projection"
+       * or "interior point"); empty for the augmented Lagrangian. */
+      std::string gauss_point_method;
     };
     StressConstraintState stress_constraint;
     /** Wall time of the run's sections so far (for summary.txt). */
