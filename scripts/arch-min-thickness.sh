@@ -2,7 +2,7 @@
 # The smallest thickness of the self-weight no-tension arch
 # (parameters/masonry-arch.prm without its point load, mean radius 4.7)
 # that the Gauss-point discretisation carries, by bisection on t/R with the
-# barrier path (Stress constraint iteration/Method = interior point,
+# scene's barrier path (Stress constraint iteration/Method = interior point,
 # Stress tolerance = 1e-4): a run that converges is admissible, one that
 # stops with "no admissible stress field" is not; anything else ends the
 # bisection of that mesh as inconclusive. One line per refinement: the
@@ -21,9 +21,8 @@ exe=$(cd "$build" && pwd)/hrcontact
 # run T_OVER_R REFINEMENTS: prints converged, refused or failed, and steps
 run() {
   read -r Ri Ro < <(awk -v tr="$1" 'BEGIN { t = tr * 4.7; printf "%.10g %.10g\n", 4.7 - t / 2, 4.7 + t / 2 }')
-  sed -e "s/Ri = 4.4, Ro = 5/Ri = $Ri, Ro = $Ro/" -e "s/: 4.4 : 5 :/: $Ri : $Ro :/" \
+  sed -e "s/Ri = 4.1, Ro = 5/Ri = $Ri, Ro = $Ro/" -e "s/: 4.1 : 5 :/: $Ri : $Ro :/" \
       -e "s/P = 5e4/P = 0/" -e "s/Global refinements = 3/Global refinements = $2/" \
-      -e "s/set Constraint points = cell centres/set Method = interior point\n  set Stress tolerance = 1e-4/" \
       "$root/parameters/masonry-arch.prm" > "$work/arch.prm"
   printf "subsection Output\n  set Write solution = false\n  set Output directory = %s\nend\n" "$work/out" >> "$work/arch.prm"
   rm -rf "$work/out"

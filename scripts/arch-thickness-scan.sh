@@ -19,10 +19,10 @@ echo "|---|---|---|---|---|---|"
 for r in $refinements; do
   for tr in $ratios; do
     read -r Ri Ro < <(awk -v tr="$tr" 'BEGIN { t = tr * 4.7; printf "%.10g %.10g\n", 4.7 - t / 2, 4.7 + t / 2 }')
-    sed -e "s/Ri = 4.4, Ro = 5/Ri = $Ri, Ro = $Ro/" -e "s/: 4.4 : 5 :/: $Ri : $Ro :/" \
+    sed -e "s/Ri = 4.1, Ro = 5/Ri = $Ri, Ro = $Ro/" -e "s/: 4.1 : 5 :/: $Ri : $Ro :/" \
         -e "s/P = 5e4/P = 0/" -e "s/Global refinements = 3/Global refinements = $r/" \
         "$root/parameters/masonry-arch.prm" > "$work/arch.prm"
-    printf "subsection Stress constraint iteration\n  set Method = closed-form projection\nend\nsubsection Material iteration\n  set Maximum steps = 300\nend\nsubsection Output\n  set Write solution = false\n  set Output directory = %s\nend\n" "$work/out" >> "$work/arch.prm"
+    printf "subsection Stress constraint iteration\n  set Method = closed-form projection\n  set Stress tolerance = 1e-6\nend\nsubsection Material iteration\n  set Maximum steps = 300\nend\nsubsection Output\n  set Write solution = false\n  set Output directory = %s\nend\n" "$work/out" >> "$work/arch.prm"
     start=$(date +%s.%N)
     "$exe" "$work/arch.prm" > "$work/arch.log" 2>&1 || true
     end=$(date +%s.%N)

@@ -1,13 +1,9 @@
-// The no-tension masonry arch (parameters/masonry-arch.prm at 192 cells):
-// the constraint iteration converges; no cell centre carries tension (the
-// largest principal stress at most 1e-6 of the largest compression, where
-// the cone is imposed); the support reactions balance self-weight and load;
-// the springing under the load is pressed across its width, the far one
-// only at its extrados node (a hinge).
-
-#include <deal.II/base/symmetric_tensor.h>
-
-#include <hrcontact/postprocess/field_values.h>
+// The no-tension masonry arch (parameters/masonry-arch.prm at 192 cells,
+// the interior point): the barrier path converges in at most 30 Newton
+// steps (19 when written); no Gauss point carries tension beyond the
+// allowance and the last stage's tolerance (the largest principal stress at
+// most 1.01e-4 of the largest stress); the support reactions balance
+// self-weight and load; the springings' contact pattern is printed.
 
 #include "tests.h"
 
@@ -26,21 +22,12 @@ main()
   const auto &sys = r.system;
   std::cout << "converged: " << (r.converged() ? "yes" : "NO") << std::endl;
 
-  double largest_tension = -1e300, largest_compression = 0;
-  for (const auto &cell : r.triangulation().active_cell_iterators())
-    {
-      SymmetricTensor<2, 2> s;
-      s[0][0]             = hrcontact::point_value(r, cell->center(), "sxx");
-      s[1][1]             = hrcontact::point_value(r, cell->center(), "syy");
-      s[0][1]             = hrcontact::point_value(r, cell->center(), "sxy");
-      const auto ev       = eigenvalues(s);
-      largest_tension     = std::max(largest_tension, ev[0]);
-      largest_compression = std::max(largest_compression, -ev[1]);
-    }
-  std::cout << "no tension at the cell centres (1e-6 of the largest "
-               "compression): "
-            << hrcontact_tests::check(largest_tension / largest_compression,
-                                      1e-6)
+  std::cout << "in at most 30 Newton steps: "
+            << (r.material.newton_steps <= 30 ? "yes" : "NO")
+            << "\nno tension at any Gauss point (1.01e-4 of the largest "
+               "stress): "
+            << hrcontact_tests::check(
+                 hrcontact_tests::largest_gauss_point_stress(r), 1.01e-4)
             << std::endl;
 
   double load = 0, reaction = 0;

@@ -29,8 +29,8 @@ namespace
          << " :";
     for (const auto &[from, to] :
          std::vector<std::pair<std::string, std::string>>{
-           {"Ri = 4.4, Ro = 5", radii.str()},
-           {": 4.4 : 5 :", grid.str()},
+           {"Ri = 4.1, Ro = 5", radii.str()},
+           {": 4.1 : 5 :", grid.str()},
            {"P = 5e4", "P = 0"}})
       text.replace(text.find(from), from.size(), to);
     return text +
@@ -50,7 +50,7 @@ main()
   // The closed form to 1e-6, the barrier path (interior point) to 1e-4.
   for (const auto &[method, tolerance] :
        std::vector<std::pair<std::string, double>>{
-         {"closed-form projection", 1e-6},
+         {"closed-form projection\n  set Stress tolerance = 1e-6", 1e-6},
          {"interior point\n  set Stress tolerance = 1e-4", 1e-4}})
     {
       if (tolerance > 1e-6)
