@@ -134,6 +134,51 @@ namespace hrcontact_tests
   }
 
   /**
+   * The stress-constraint patch tests' body: a box of 4^dim cells
+   * distorted by 0.3, E = 1000, nu = 0.3 (plane stress in 2D), Material/
+   * Admissible stresses = @p constraint, u = eps x on its whole boundary;
+   * @p extra appended (a Method, say).
+   */
+  template <int dim>
+  std::string
+  constraint_patch(const std::string &constraint,
+                   const double       eps[3][3],
+                   const std::string &extra = "")
+  {
+    std::ostringstream t;
+    t << std::setprecision(17) << "set Dimension = " << dim
+      << "\nsubsection Geometry\n"
+         "  set Grid generator = subdivided_hyper_cube\n"
+         "  set Grid arguments = 4 : 0 : 1 : true\n"
+         "  set Distortion = 0.3\n"
+         "end\n"
+         "subsection Material\n"
+         "  set Young's modulus = 1000\n"
+         "  set Poisson's ratio = 0.3\n"
+      << (dim == 2 ? "  set Plane condition = plane stress\n" : "")
+      << "  set Admissible stresses = " << constraint
+      << "\nend\nsubsection Output\n  set Write solution = false\n"
+         "  set Output directory = results\nend\n"
+      << linear_displacement_supports<dim>(eps) << extra;
+    return t.str();
+  }
+
+  /** t = R diag(e1, e2) R^T in the x-y plane, R the rotation by
+   * @p degrees (the rest of t zero). */
+  inline void
+  rotated(const double e1,
+          const double e2,
+          const double degrees,
+          double       t[3][3])
+  {
+    const double a = degrees * M_PI / 180, c = std::cos(a), s = std::sin(a);
+    t[0][0] = c * c * e1 + s * s * e2;
+    t[1][1] = s * s * e1 + c * c * e2;
+    t[0][1] = t[1][0] = c * s * (e1 - e2);
+    t[0][2] = t[2][0] = t[1][2] = t[2][1] = t[2][2] = 0;
+  }
+
+  /**
    * The patch tests' uniform stress state s (plane strain: s_zz = nu (s_xx +
    * s_yy)) and its strain eps for the isotropic law (E, nu), computed here
    * independently of the library's compliance.

@@ -56,7 +56,8 @@ namespace hrcontact
     displacement_code.parse_parameters(prm);
     nested.parse_parameters(prm);
     material_loop.parse_parameters(prm);
-    nested.carries_point_strains = material_loop.projects_constraint(scene);
+    nested.carries_point_strains =
+      material_loop.projects_constraint(scene, spaces.stress_element_name);
     linear_solver.stiffening_compliance = bool(scene.stress_constraint);
     if (const CoarserLevelRequest *request = as_coarser_level)
       {

@@ -35,11 +35,27 @@ namespace hrcontact
   }
 
   template <int dim>
+  StressConstraintIteration::Method
+  MaterialLoop<dim>::method(const Scene<dim>  &scene,
+                            const std::string &stress_element) const
+  {
+    using Method = StressConstraintIteration::Method;
+    if (constraint_iteration.method != Method::automatic)
+      return constraint_iteration.method;
+    const bool applies = scene.stress_constraint &&
+                         scene.stress_constraint->has_closed_form() &&
+                         stress_element == "DGQ1" && scene.all_linear();
+    return applies ? Method::interior_point : Method::augmented_lagrangian;
+  }
+
+  template <int dim>
   bool
-  MaterialLoop<dim>::projects_constraint(const Scene<dim> &scene) const
+  MaterialLoop<dim>::projects_constraint(
+    const Scene<dim>  &scene,
+    const std::string &stress_element) const
   {
     return scene.stress_constraint &&
-           constraint_iteration.method !=
+           method(scene, stress_element) !=
              StressConstraintIteration::Method::augmented_lagrangian;
   }
 
@@ -72,8 +88,7 @@ namespace hrcontact
     };
     if (r.scene.stress_constraint)
       {
-        if (constraint_iteration.method !=
-            StressConstraintIteration::Method::augmented_lagrangian)
+        if (projects_constraint(r.scene, r.spaces.stress_element_name))
           run_projected(system, path, operations, r, log);
         else
           run_constrained(system, path, operations, r, log);
@@ -190,7 +205,7 @@ namespace hrcontact
                                    Results<dim>                 &r,
                                    std::ostream                 &log)
   {
-    const bool interior = constraint_iteration.method ==
+    const bool interior = method(r.scene, r.spaces.stress_element_name) ==
                           StressConstraintIteration::Method::interior_point;
     r.stress_constraint.gauss_point_method =
       interior ? "interior point" : "closed-form projection";

@@ -16,10 +16,13 @@ namespace hrcontact
     prm.enter_subsection("Stress constraint iteration");
     prm.declare_entry(
       "Method",
-      "augmented Lagrangian",
-      Patterns::Selection(
-        "augmented Lagrangian|closed-form projection|interior point"),
-      "How Material/Admissible stresses is imposed. augmented Lagrangian: "
+      "automatic",
+      Patterns::Selection("automatic|augmented Lagrangian|closed-form "
+                          "projection|interior point"),
+      "How Material/Admissible stresses is imposed. automatic: the interior "
+      "point where it applies (DGQ1 stresses, the default element, a linear "
+      "elastic law and a cone with a closed form: no tension, no "
+      "compression), else the augmented Lagrangian. augmented Lagrangian: "
       "the paper's Steps 1-6 with multipliers at the Constraint points "
       "below (any law, e.g. Ramberg-Osgood). closed-form projection: at "
       "every Gauss point of the compliance, each point's stress the "
@@ -110,7 +113,8 @@ namespace hrcontact
     method             = get_selection<Method>(
       prm,
       "Method",
-      {{"augmented Lagrangian", Method::augmented_lagrangian},
+      {{"automatic", Method::automatic},
+                   {"augmented Lagrangian", Method::augmented_lagrangian},
                    {"closed-form projection", Method::closed_form_projection},
                    {"interior point", Method::interior_point}});
     residual_stiffness = prm.get_double("Residual stiffness");

@@ -35,6 +35,11 @@ namespace hrcontact
 
     std::string
     name() const override;
+    bool
+    has_closed_form() const override
+    {
+      return true;
+    }
     dealii::SymmetricTensor<2, dim>
     project(const dealii::SymmetricTensor<2, dim> &X) const override;
     dealii::SymmetricTensor<2, dim>

@@ -116,6 +116,14 @@ namespace hrcontact
      * allowance -> 0 give elastic_projection. The default refuses, like
      * elastic_projection.
      */
+    /** Whether elastic_projection and barrier_projection are implemented
+     * (Method = automatic takes the interior point only then). */
+    virtual bool
+    has_closed_form() const
+    {
+      return false;
+    }
+
     virtual void
     barrier_projection(const dealii::SymmetricTensor<2, dim> &eps,
                        const double                           lambda,

@@ -45,7 +45,17 @@ namespace hrcontact
      * the Gauss points: its state, the point strains, is then carried from
      * a coarser level (NestedLevelRunner). */
     bool
-    projects_constraint(const Scene<dim> &scene) const;
+    projects_constraint(const Scene<dim>  &scene,
+                        const std::string &stress_element) const;
+
+    /**
+     * How the scene's stress constraint is imposed: Method, automatic
+     * resolved to the interior point where it applies (the Stress element
+     * is DGQ1, every body's law linear elastic, the cone has a closed form)
+     * and to the augmented Lagrangian elsewhere.
+     */
+    StressConstraintIteration::Method
+    method(const Scene<dim> &scene, const std::string &stress_element) const;
 
     /** Run solve_once as above; the steps, changes and the constraint's
      * state go to results. */

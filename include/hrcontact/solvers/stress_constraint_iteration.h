@@ -105,6 +105,9 @@ namespace hrcontact
     /** How the cone is imposed (Method). */
     enum class Method
     {
+      /** The interior point where it applies, else the augmented
+       * Lagrangian (MaterialLoop::method). */
+      automatic,
       /** This class: multipliers at the Constraint points. */
       augmented_lagrangian,
       /** GaussPointCone: in closed form at the Gauss points. */
@@ -112,7 +115,7 @@ namespace hrcontact
       /** GaussPointCone with a log barrier driven to zero (BarrierPath). */
       interior_point
     };
-    Method method = Method::augmented_lagrangian;
+    Method method = Method::automatic;
     /** The closed-form projection's residual stiffness (GaussPointCone). */
     double residual_stiffness = 1e-4;
     /** The closed-form projection's tolerance on the model's stresses. */
