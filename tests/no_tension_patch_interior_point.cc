@@ -14,8 +14,6 @@
 // Ramberg-Osgood law. A traction only tension could carry is refused by
 // name.
 
-#include <hrcontact/core/input.h>
-
 #include "tests.h"
 
 using namespace hrcontact_tests;
@@ -26,38 +24,25 @@ namespace
 
   template <int dim>
   void
-  report(const std::string &name,
-         const std::string &constraint,
-         const double       eps[3][3],
-         const double       sigma[3][3],
-         const double       opening)
+  report(const ConePatchState &state)
   {
     const auto problem =
-      solve_from_text<dim>(constraint_patch<dim>(constraint, eps));
+      solve_from_text<dim>(constraint_patch<dim>(state.constraint, state.eps));
     const auto &r = problem->results();
     const auto [max_err, l2_err] =
-      stress_errors<dim>(r, stress_reference<dim>(sigma));
-    double scale = 0, strain = 0;
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int j = 0; j < 3; ++j)
-        {
-          scale  = std::max(scale, std::abs(sigma[i][j]));
-          strain = std::max(strain, std::abs(eps[i][j]));
-        }
-    // stress_errors is relative to the closed form's norms; a zero stress
-    // gives absolute errors, measured against E |eps|.
-    const double absolute = (scale > 0) ? 1. : E * strain;
-    std::cout << "  " << name << " ('" << constraint
+      stress_errors<dim>(r, stress_reference<dim>(state.sigma));
+    const auto [absolute, strain] = patch_error_scales(state, E);
+    std::cout << "  " << state.name << " ('" << state.constraint
               << "'): method: " << r.stress_constraint.gauss_point_method
               << ", in at most 12 Newton steps: "
               << (r.material.newton_steps <= 12 ? "yes" : "NO")
               << "\n    stresses against the closed form, max < 1e-5: "
               << check(max_err / absolute, 1e-5)
               << ", L2 < 1e-5: " << check(l2_err / absolute, 1e-5)
-              << "\n    largest fracture strain against " << opening
+              << "\n    largest fracture strain against " << state.opening
               << " to 1e-5: "
               << check(std::abs(r.stress_constraint.largest_fracture_strain -
-                                opening) /
+                                state.opening) /
                          strain,
                        1e-5)
               << std::endl;
@@ -79,54 +64,9 @@ namespace
 int
 main()
 {
-  std::cout << std::setprecision(6) << "2D, plane stress\n";
-  for (const double degrees : {0., 30.})
-    {
-      const double e1 = 1e-3, e2 = -2e-3;
-      double       eps[3][3], sigma[3][3];
-      rotated(e1, e2, degrees, eps);
-      rotated(0, E * e2, degrees, sigma);
-      report<2>("crack at " + std::to_string(int(degrees)) + " degrees",
-                "no tension",
-                eps,
-                sigma,
-                e1 + nu * e2);
-      double meps[3][3], msigma[3][3];
-      rotated(-e1, -e2, degrees, meps);
-      rotated(0, -E * e2, degrees, msigma);
-      report<2>("wrinkle at " + std::to_string(int(degrees)) + " degrees",
-                "no compression",
-                meps,
-                msigma,
-                e1 + nu * e2);
-    }
-  {
-    double eps[3][3], sigma[3][3];
-    rotated(-1e-3, -2e-3, 30, eps);
-    rotated(E / (1 - nu * nu) * (-1e-3 + nu * -2e-3),
-            E / (1 - nu * nu) * (-2e-3 + nu * -1e-3),
-            30,
-            sigma);
-    report<2>("compressed both ways", "no tension", eps, sigma, 0);
-    double zero[3][3] = {};
-    rotated(2e-3, 1e-3, 30, eps);
-    report<2>("stretched both ways", "no tension", eps, zero, 2e-3);
-  }
-  std::cout << "3D\n";
-  {
-    double       eps[3][3] = {{2e-3, 0, 0}, {0, -2e-3, 0}, {0, 0, -1e-3}};
-    const double s_yy      = E / (1 - nu * nu) * (eps[1][1] + nu * eps[2][2]),
-                 s_zz      = E / (1 - nu * nu) * (eps[2][2] + nu * eps[1][1]);
-    double sigma[3][3]     = {{0, 0, 0}, {0, s_yy, 0}, {0, 0, s_zz}};
-    report<3>("crack across x",
-              "no tension",
-              eps,
-              sigma,
-              eps[0][0] + nu * (s_yy + s_zz) / E);
-    double stretched[3][3] = {{2e-3, 0, 0}, {0, 1e-3, 0}, {0, 0, 3e-3}};
-    double zero[3][3]      = {};
-    report<3>("stretched every way", "no tension", stretched, zero, 3e-3);
-  }
+  std::cout << std::setprecision(6);
+  for (const auto &state : cone_patch_states(E, nu))
+    (state.dim == 2 ? report<2> : report<3>)(state);
 
   std::cout << "What automatic takes:\n"
             << "  DGQ1, linear elastic: " << method_taken("") << '\n'
@@ -142,25 +82,6 @@ main()
                             "  set Ramberg-Osgood exponent = 5\nend\n")
             << '\n';
 
-  std::cout << "A traction that needs tension: ";
-  try
-    {
-      double      eps[3][3] = {};
-      std::string text      = constraint_patch<2>("no tension", eps);
-      text += "subsection Supports\n"
-              "  set Prescribed displacements = 0 x: 0 | 2 y: 0\nend\n"
-              "subsection Loads\n  set Tractions = 1: 1; 0\nend\n";
-      solve_from_text<2>(text);
-      std::cout << "NOT refused\n";
-    }
-  catch (const hrcontact::NotConvergedError &e)
-    {
-      const std::string what = e.what();
-      std::cout << "refused, naming the cause: "
-                << (what.find("no admissible stress field") !=
-                        std::string::npos ?
-                      "yes" :
-                      "NO: " + what)
-                << '\n';
-    }
+  std::cout << "A traction that needs tension: " << tension_traction_refusal("")
+            << '\n';
 }

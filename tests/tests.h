@@ -9,6 +9,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <hrcontact/core/hr_problem.h>
+#include <hrcontact/core/input.h>
 #include <hrcontact/core/run.h>
 #include <hrcontact/material/stress_constraint.h>
 #include <hrcontact/postprocess/field_values.h>
@@ -176,6 +177,97 @@ namespace hrcontact_tests
     t[1][1] = s * s * e1 + c * c * e2;
     t[0][1] = t[1][0] = c * s * (e1 - e2);
     t[0][2] = t[2][0] = t[1][2] = t[2][1] = t[2][2] = 0;
+  }
+
+  /** One homogeneous state of the cone patch tests: its name, cone and
+   * dimension, the strain, the closed form's stress, cracked fraction and
+   * largest fracture strain. */
+  struct ConePatchState
+  {
+    std::string  name, constraint;
+    unsigned int dim;
+    double       eps[3][3], sigma[3][3];
+    double       cracked, opening;
+  };
+
+  /**
+   * What a cone patch state's stress errors are divided by, and |eps|:
+   * stress_errors is relative to the closed form's norms (1), except where
+   * the closed form's stress is zero (a homogeneous tension), where it is
+   * absolute and measured against E |eps|.
+   */
+  inline std::pair<double, double>
+  patch_error_scales(const ConePatchState &state, const double E)
+  {
+    double scale = 0, strain = 0;
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        {
+          scale  = std::max(scale, std::abs(state.sigma[i][j]));
+          strain = std::max(strain, std::abs(state.eps[i][j]));
+        }
+    return {(scale > 0) ? 1. : E * strain, strain};
+  }
+
+  /**
+   * The cone patch tests' states for the law (E, nu), plane stress in 2D:
+   * a stretch-and-squeeze strain with its crack at 0 and 30 degrees (the
+   * uniaxial stress E eps_2 n_2 n_2, fracture strain (eps_1 + nu eps_2) n_1
+   * n_1) and its no-compression mirror, compressed both ways (elastic,
+   * nothing cracked), stretched both ways (no stress); in 3D stretched
+   * along x and compressed along y and z, and stretched every way.
+   */
+  inline std::vector<ConePatchState>
+  cone_patch_states(const double E, const double nu)
+  {
+    std::vector<ConePatchState> states;
+    const auto                  add = [&](const std::string &name,
+                         const std::string &constraint,
+                         const unsigned int dim,
+                         const double       cracked,
+                         const double       opening) -> ConePatchState                  &{
+      states.push_back({name, constraint, dim, {}, {}, cracked, opening});
+      return states.back();
+    };
+    const double e1 = 1e-3, e2 = -2e-3;
+    for (const double degrees : {0., 30.})
+      {
+        const std::string at =
+          " at " + std::to_string(int(degrees)) + " degrees";
+        auto &crack = add("crack" + at, "no tension", 2, 1, e1 + nu * e2);
+        rotated(e1, e2, degrees, crack.eps);
+        rotated(0, E * e2, degrees, crack.sigma);
+        auto &wrinkle =
+          add("wrinkle" + at, "no compression", 2, 1, e1 + nu * e2);
+        rotated(-e1, -e2, degrees, wrinkle.eps);
+        rotated(0, -E * e2, degrees, wrinkle.sigma);
+      }
+    auto &both = add("compressed both ways", "no tension", 2, 0, 0);
+    rotated(-1e-3, -2e-3, 30, both.eps);
+    rotated(E / (1 - nu * nu) * (-1e-3 + nu * -2e-3),
+            E / (1 - nu * nu) * (-2e-3 + nu * -1e-3),
+            30,
+            both.sigma);
+    auto &stretched = add("stretched both ways", "no tension", 2, 1, 2e-3);
+    rotated(2e-3, 1e-3, 30, stretched.eps);
+    // 3D: sigma_xx = 0 and the plane-stress answer in y, z; mu_xx = eps_xx
+    // + nu (s_yy + s_zz) / E.
+    const double eps3[3][3] = {{2e-3, 0, 0}, {0, -2e-3, 0}, {0, 0, -1e-3}};
+    const double s_yy = E / (1 - nu * nu) * (eps3[1][1] + nu * eps3[2][2]),
+                 s_zz = E / (1 - nu * nu) * (eps3[2][2] + nu * eps3[1][1]);
+    auto &across      = add("3D crack across x",
+                       "no tension",
+                       3,
+                       1,
+                       eps3[0][0] + nu * (s_yy + s_zz) / E);
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        across.eps[i][j] = eps3[i][j];
+    across.sigma[1][1] = s_yy;
+    across.sigma[2][2] = s_zz;
+    auto &every     = add("3D stretched every way", "no tension", 3, 1, 3e-3);
+    every.eps[0][0] = 2e-3, every.eps[1][1] = 1e-3, every.eps[2][2] = 3e-3;
+    return states;
   }
 
   /**
@@ -615,6 +707,36 @@ namespace hrcontact_tests
     for (unsigned int k = 0; k < a.size(); ++k)
       d = std::max(d, std::abs(a[k] - b[k]));
     return d;
+  }
+
+  /**
+   * constraint_patch in 2D under "no tension" with @p extra, held by rollers
+   * on x = 0 and y = 0 and pulled by a traction on x = 1 that only tension
+   * could carry: "refused, naming the cause: yes" when the run stops with
+   * the named cause, else what happened.
+   */
+  inline std::string
+  tension_traction_refusal(const std::string &extra)
+  {
+    const double      eps[3][3] = {};
+    const std::string text =
+      constraint_patch<2>("no tension", eps, extra) +
+      "subsection Supports\n"
+      "  set Prescribed displacements = 0 x: 0 | 2 y: 0\nend\n"
+      "subsection Loads\n  set Tractions = 1: 1; 0\nend\n";
+    try
+      {
+        solve_from_text<2>(text);
+        return "NOT refused";
+      }
+    catch (const hrcontact::NotConvergedError &e)
+      {
+        const std::string what = e.what();
+        return std::string("refused, naming the cause: ") +
+               (what.find("no admissible stress field") != std::string::npos ?
+                  "yes" :
+                  "NO: " + what);
+      }
   }
 } // namespace hrcontact_tests
 
