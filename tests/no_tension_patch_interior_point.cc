@@ -12,7 +12,8 @@
 // were 3e-8 to 5e-6). Where the interior point does not apply,
 // automatic takes the augmented Lagrangian: Pian-Sumihara stresses, a
 // Ramberg-Osgood law. A traction only tension could carry is refused by
-// name.
+// name, and so is a Stress tolerance that is neither automatic nor a
+// positive number.
 
 #include "tests.h"
 
@@ -82,6 +83,26 @@ main()
                             "  set Ramberg-Osgood exponent = 5\nend\n")
             << '\n';
 
+  std::cout << "Stress tolerance = fast: ";
+  try
+    {
+      double eps[3][3] = {};
+      solve_from_text<2>(
+        constraint_patch<2>("no tension",
+                            eps,
+                            "subsection Stress constraint iteration\n"
+                            "  set Stress tolerance = fast\nend\n"));
+      std::cout << "NOT refused\n";
+    }
+  catch (const hrcontact::InputError &e)
+    {
+      std::cout << "refused, naming the entry: "
+                << (std::string(e.what()).find("Stress tolerance") !=
+                        std::string::npos ?
+                      "yes" :
+                      "NO")
+                << '\n';
+    }
   std::cout << "A traction that needs tension: " << tension_traction_refusal("")
             << '\n';
 }

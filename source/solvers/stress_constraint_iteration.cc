@@ -38,9 +38,10 @@ namespace hrcontact
       "the cone, each barrier value a smooth strictly convex problem.");
     prm.declare_entry(
       "Stress tolerance",
-      "1e-6",
-      Patterns::Double(0),
-      "closed-form projection: stop when the stresses of the last Newton "
+      "automatic",
+      Patterns::Anything(),
+      "automatic: 1e-6 for the closed-form projection, 1e-4 for the "
+      "interior point; or a positive number. closed-form projection: stop when the stresses of the last Newton "
       "model (equilibrated) and the projected stresses of its strains (in "
       "the cone) differ nowhere by more than this times the largest stress. "
       "Near crack fronts and in cracked regions the strains that minimise "
@@ -117,17 +118,34 @@ namespace hrcontact
                    {"augmented Lagrangian", Method::augmented_lagrangian},
                    {"closed-form projection", Method::closed_form_projection},
                    {"interior point", Method::interior_point}});
-    residual_stiffness = prm.get_double("Residual stiffness");
-    stress_tolerance   = prm.get_double("Stress tolerance");
+    residual_stiffness          = prm.get_double("Residual stiffness");
+    const std::string tolerance = prm.get("Stress tolerance");
+    if (tolerance == "automatic")
+      stress_tolerance = 0;
+    else
+      {
+        std::size_t end = 0;
+        try
+          {
+            stress_tolerance = std::stod(tolerance, &end);
+          }
+        catch (const std::exception &)
+          {
+            end = 0;
+          }
+        if (end == 0 ||
+            tolerance.find_first_not_of(" \t", end) != std::string::npos ||
+            !(stress_tolerance > 0))
+          throw InputError("Stress constraint iteration/Stress tolerance = '" +
+                           tolerance +
+                           "': give automatic or a positive number.");
+      }
     prm.leave_subsection();
     if (!(initial_penalty > 0))
       throw InputError("Stress constraint iteration/Initial penalty must be "
                        "positive.");
     if (!(relative_tolerance > 0))
       throw InputError("Stress constraint iteration/Relative tolerance must "
-                       "be positive (0 would never stop).");
-    if (!(stress_tolerance > 0))
-      throw InputError("Stress constraint iteration/Stress tolerance must "
                        "be positive (0 would never stop).");
   }
 

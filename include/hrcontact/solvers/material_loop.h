@@ -104,15 +104,17 @@ namespace hrcontact
      * run_projected's iteration for Method = interior point: the elastic
      * step (or one from a coarser level's strains, @p carried) sets the
      * scale @p elastic_stress, then BarrierPath's stages, each Newton's
-     * method from the last one's strains. A stage that fails after the
-     * strains grew (@p growth, the largest over the elastic step's) beyond
-     * 1e4 is reported as a load no admissible field carries.
+     * method from the last one's strains, the last one to
+     * @p stress_tolerance. A stage that fails after the strains grew
+     * (@p growth, the largest over the elastic step's) beyond 1e5 is
+     * reported as a load no admissible field carries.
      */
     void
     run_barrier_path(const MaterialIteration::Operations &operations,
                      FieldVector                         &state,
                      const double                        &elastic_stress,
                      const double                        &growth,
+                     const double                         stress_tolerance,
                      const bool                           carried,
                      Results<dim>                        &results,
                      std::ostream                        &log);

@@ -118,8 +118,9 @@ namespace hrcontact
     Method method = Method::automatic;
     /** The closed-form projection's residual stiffness (GaussPointCone). */
     double residual_stiffness = 1e-4;
-    /** The closed-form projection's tolerance on the model's stresses. */
-    double stress_tolerance = 1e-6;
+    /** The Gauss-point methods' tolerance on the model's stresses; 0:
+     * automatic (MaterialLoop: 1e-6 closed form, 1e-4 interior point). */
+    double stress_tolerance = 0;
 
   private:
     std::vector<double>       residuals, penalties;
