@@ -2,8 +2,8 @@
 # The smallest thickness of the self-weight no-tension arch
 # (parameters/masonry-arch.prm without its point load, mean radius 4.7)
 # that the Gauss-point discretisation carries, by bisection on t/R with the
-# scene's barrier path (Stress constraint iteration/Method = interior point,
-# Stress tolerance = 1e-4): a run that converges is admissible, one that
+# scene's default method (the interior point, its Stress tolerance
+# automatic: 1e-4): a run that converges is admissible, one that
 # stops with "no admissible stress field" is not; anything else ends the
 # bisection of that mesh as inconclusive. One line per refinement: the
 # bracket, its midpoint, and the Newton steps at the admissible end.

@@ -26,8 +26,13 @@ def main():
     directory = sys.argv[1]
     N, e, b = (float(v) for v in (sys.argv[2:5] if len(sys.argv) >= 5
                                   else (1e5, 0.25, 1)))
-    c, peak = 3 * (b / 2 - e), 2 * N / (3 * (b / 2 - e))
-    a = read_vtu(os.path.join(directory, "solution.vtu"))
+    c = 3 * (b / 2 - e)
+    peak = 2 * N / c
+    vtu = os.path.join(directory, "solution.vtu")
+    if not os.path.isfile(vtu):
+        sys.exit("pier_section.py: no %s (run the scene with Output/Write "
+                 "solution = true)" % vtu)
+    a = read_vtu(vtu)
     points, cells, syy = a["points"], a["connectivity"], a["syy"]
     ys = points[1::3]
     half = (min(ys) + max(ys)) / 2

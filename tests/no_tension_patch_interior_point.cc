@@ -7,13 +7,13 @@
 // what the barrier's allowance (1e-6 of the largest stress) and the last
 // stage's tolerance leave, 1e-5 of the largest stress or of E |eps| where
 // the stress is zero (a homogeneous tension: the whole strain a fracture
-// strain), in at most 12 Newton steps (8 when written); the largest
-// fracture strain must be the closed form's to 1e-5 of |eps| (the errors
-// were 3e-8 to 5e-6). Where the interior point does not apply,
-// automatic takes the augmented Lagrangian: Pian-Sumihara stresses, a
-// Ramberg-Osgood law. A traction only tension could carry is refused by
-// name, and so is a Stress tolerance that is neither automatic nor a
-// positive number.
+// strain), in at most 12 Newton steps (8 when written); the largest fracture
+// strain must be the closed form's to 1e-5 of |eps| (the errors were 3e-8 to
+// 5e-6). Where the interior point does not apply, automatic takes the
+// augmented Lagrangian: Pian-Sumihara stresses, a Ramberg-Osgood law,
+// Constraint points chosen (they belong to it). A traction only tension
+// could carry is refused by name, and so is a Stress tolerance that is
+// neither automatic nor a positive number.
 
 #include "tests.h"
 
@@ -74,6 +74,10 @@ main()
             << "  Pian-Sumihara, linear elastic: "
             << method_taken("subsection Finite elements\n"
                             "  set Stress element = Pian-Sumihara\nend\n")
+            << '\n'
+            << "  DGQ1, linear elastic, Constraint points = cell centres: "
+            << method_taken("subsection Stress constraint iteration\n"
+                            "  set Constraint points = cell centres\nend\n")
             << '\n'
             << "  DGQ1, Ramberg-Osgood: "
             << method_taken("subsection Material\n"

@@ -26,6 +26,21 @@ namespace hrcontact
     }
   } // namespace
 
+  bool
+  parse_number(const std::string &text, double &value)
+  {
+    std::size_t used = 0;
+    try
+      {
+        value = std::stod(text, &used);
+      }
+    catch (const std::exception &)
+      {
+        return false;
+      }
+    return text.find_first_not_of(" \t", used) == std::string::npos;
+  }
+
   std::vector<std::string>
   split_and_trim(const std::string &text, const char separator)
   {

@@ -42,9 +42,12 @@ namespace hrcontact
     using Method = StressConstraintIteration::Method;
     if (constraint_iteration.method != Method::automatic)
       return constraint_iteration.method;
+    // Constraint points other than the default belong to the augmented
+    // Lagrangian: a file that chose them keeps it (and its results).
     const bool applies = scene.stress_constraint &&
                          scene.stress_constraint->has_closed_form() &&
-                         stress_element == "DGQ1" && scene.all_linear();
+                         stress_element == "DGQ1" && scene.all_linear() &&
+                         constraint_iteration.constraint_points == "vertices";
     return applies ? Method::interior_point : Method::augmented_lagrangian;
   }
 

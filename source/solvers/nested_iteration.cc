@@ -218,21 +218,13 @@ namespace hrcontact
       coarse_levels = -1;
     else
       {
-        std::size_t used  = 0;
-        int         value = -1;
-        try
-          {
-            value = std::stoi(levels, &used);
-          }
-        catch (const std::exception &)
-          {
-            used = 0;
-          }
-        if (used != levels.size() || value < 0)
+        double value = -1;
+        if (!parse_number(levels, value) || value < 0 ||
+            value != std::floor(value))
           throw InputError("Nested iteration/Coarse levels must be automatic "
                            "or a non-negative integer, not '" +
                            levels + "'.");
-        coarse_levels = value;
+        coarse_levels = static_cast<int>(value);
       }
     minimum_dofs           = prm.get_double("Minimum dofs");
     coarsest_level_dofs    = prm.get_double("Coarsest level dofs");

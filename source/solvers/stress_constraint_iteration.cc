@@ -22,7 +22,8 @@ namespace hrcontact
       "How Material/Admissible stresses is imposed. automatic: the interior "
       "point where it applies (DGQ1 stresses, the default element, a linear "
       "elastic law and a cone with a closed form: no tension, no "
-      "compression), else the augmented Lagrangian. augmented Lagrangian: "
+      "compression), else the augmented Lagrangian (also where Constraint "
+      "points is set to cell centres or Gauss points). augmented Lagrangian: "
       "the paper's Steps 1-6 with multipliers at the Constraint points "
       "below (any law, e.g. Ramberg-Osgood). closed-form projection: at "
       "every Gauss point of the compliance, each point's stress the "
@@ -41,8 +42,8 @@ namespace hrcontact
       "automatic",
       Patterns::Anything(),
       "automatic: 1e-6 for the closed-form projection, 1e-4 for the "
-      "interior point; or a positive number. closed-form projection: stop when the stresses of the last Newton "
-      "model (equilibrated) and the projected stresses of its strains (in "
+      "interior point; or a positive number. closed-form projection: stop "
+      "when the stresses of the last Newton model (equilibrated) and the projected stresses of its strains (in "
       "the cone) differ nowhere by more than this times the largest stress. "
       "Near crack fronts and in cracked regions the strains that minimise "
       "the energy need not be finite, so the iteration converges there in "
@@ -122,24 +123,10 @@ namespace hrcontact
     const std::string tolerance = prm.get("Stress tolerance");
     if (tolerance == "automatic")
       stress_tolerance = 0;
-    else
-      {
-        std::size_t end = 0;
-        try
-          {
-            stress_tolerance = std::stod(tolerance, &end);
-          }
-        catch (const std::exception &)
-          {
-            end = 0;
-          }
-        if (end == 0 ||
-            tolerance.find_first_not_of(" \t", end) != std::string::npos ||
-            !(stress_tolerance > 0))
-          throw InputError("Stress constraint iteration/Stress tolerance = '" +
-                           tolerance +
-                           "': give automatic or a positive number.");
-      }
+    else if (!parse_number(tolerance, stress_tolerance) ||
+             !(stress_tolerance > 0))
+      throw InputError("Stress constraint iteration/Stress tolerance = '" +
+                       tolerance + "': give automatic or a positive number.");
     prm.leave_subsection();
     if (!(initial_penalty > 0))
       throw InputError("Stress constraint iteration/Initial penalty must be "

@@ -109,6 +109,14 @@ namespace hrcontact
   std::vector<std::pair<std::string, std::string>>
   parse_named_list(const std::string &text, const std::string &where);
 
+  /**
+   * Whether @p text is one number and nothing else (surrounding blanks
+   * aside), and then its value: the entries that take `automatic` or a
+   * number (Nested iteration/Coarse levels, Stress tolerance).
+   */
+  bool
+  parse_number(const std::string &text, double &value);
+
   /** Split at a separator and trim each piece; empty pieces are kept. */
   std::vector<std::string>
   split_and_trim(const std::string &text, const char separator);

@@ -103,6 +103,14 @@ namespace hrcontact
                        dealii::SymmetricTensor<4, dim>       *tangent,
                        dealii::SymmetricTensor<2, dim>       *fracture) const;
 
+    /** Whether elastic_projection and barrier_projection are implemented
+     * (Method = automatic takes the interior point only then). */
+    virtual bool
+    has_closed_form() const
+    {
+      return false;
+    }
+
     /**
      * The cone's log-barrier smoothing at one point (Method = interior
      * point): the stress of the strain eps when the complementary energy
@@ -116,14 +124,6 @@ namespace hrcontact
      * allowance -> 0 give elastic_projection. The default refuses, like
      * elastic_projection.
      */
-    /** Whether elastic_projection and barrier_projection are implemented
-     * (Method = automatic takes the interior point only then). */
-    virtual bool
-    has_closed_form() const
-    {
-      return false;
-    }
-
     virtual void
     barrier_projection(const dealii::SymmetricTensor<2, dim> &eps,
                        const double                           lambda,

@@ -51,8 +51,9 @@ namespace hrcontact
     /**
      * How the scene's stress constraint is imposed: Method, automatic
      * resolved to the interior point where it applies (the Stress element
-     * is DGQ1, every body's law linear elastic, the cone has a closed form)
-     * and to the augmented Lagrangian elsewhere.
+     * is DGQ1, every body's law linear elastic, the cone has a closed form,
+     * Constraint points left at its default) and to the augmented
+     * Lagrangian elsewhere.
      */
     StressConstraintIteration::Method
     method(const Scene<dim> &scene, const std::string &stress_element) const;
