@@ -23,13 +23,14 @@ namespace hrcontact
     if (dim != 2)
       throw InputError(what + " is computed in 2D only so far.");
     // Prescribed displacements and point supports are the kinds that are
-    // not normal: every other kind (contact, normal constraints) is.
+    // not normal; of the normal kinds, straight obstacles are covered
+    // (ContactTractions): the gap is linear along a straight face.
     for (const auto &source : scene.constraints)
-      if (source->is_normal_kind())
+      if (source->is_normal_kind() && source->entry() != "Contact/Obstacles")
         throw InputError(what + " does not cover " + source->entry() +
-                         " yet (contact and normal constraints: the "
-                         "tractions on their faces and the contact term of "
-                         "the bound are not built).");
+                         " yet (of the contact and normal kinds only "
+                         "Contact/Obstacles: straight obstacles, along whose "
+                         "faces the gap is linear).");
     if (!scene.all_linear() || scene.stress_constraint)
       throw InputError(what + " needs linear elastic bodies so far (no "
                               "Admissible stresses, no nonlinear law).");
@@ -43,12 +44,11 @@ namespace hrcontact
     const std::string what =
       "The error bound (Postprocess/Error bound, Mesh refinement/Estimator = "
       "bound, Target error)";
-    if (results.has_contact)
-      throw InputError(what + " does not cover contact yet (its tractions "
-                              "on the contact faces are not built).");
+    if (const std::string why = ContactTractions::not_covered(results.system);
+        !why.empty())
+      throw InputError(what + " covers " + why + ".");
     for (const auto &row : results.system.rows)
-      if (row.row_class != RowClass::free &&
-          (row.row_class != RowClass::prescribed || single_dof(row) < 0))
+      if (row.row_class == RowClass::prescribed && single_dof(row) < 0)
         throw InputError(what + " covers prescribed displacement components "
                                 "only (no normal or rotated constraints).");
   }
@@ -60,7 +60,13 @@ namespace hrcontact
     double s = 0;
     for (const double b : bound_squared)
       s += b;
-    return std::sqrt(Utilities::MPI::sum(s, results.partition.communicator));
+    s = Utilities::MPI::sum(s, results.partition.communicator);
+    if (lift == 0)
+      return std::sqrt(s);
+    // v = u_h + w meets the contact rows: |u - u_h| <= |u - v| + |w|_E and
+    // |tau - C eps(v)| <= |tau - C eps(u_h)| + |w|_E.
+    const double quadratic = std::sqrt(std::max(0., s - contact_term));
+    return std::sqrt(std::pow(quadratic + lift, 2) + contact_term) + lift;
   }
 
   template <int dim>
@@ -90,7 +96,33 @@ namespace hrcontact
         const MPI_Comm comm = results.partition.communicator;
         cell_residual       = Utilities::MPI::max(cells.residual, comm);
         solution_energy     = Utilities::MPI::sum(solution_energy, comm);
+        add_contact_terms(faces);
       }
+  }
+
+  template <int dim>
+  void
+  EquilibratedStress<dim>::add_contact_terms(const FaceTractions &faces)
+  {
+    contact_term = lift             = 0;
+    const ContactTractions *contact = faces.contact();
+    if (!contact)
+      return;
+    for (const auto &cell : results.triangulation().active_cell_iterators())
+      if (results.partition.owned_cell[cell->active_cell_index()])
+        for (const unsigned int f : cell->face_indices())
+          if (const auto *c = contact->find(cell->face(f)->index()))
+            {
+              const double term =
+                ContactTractions::gap_term(*c, cell->face(f)->measure());
+              bound_squared[cell->active_cell_index()] += term;
+              contact_term += term;
+            }
+    const MPI_Comm comm = results.partition.communicator;
+    contact_term        = Utilities::MPI::sum(contact_term, comm);
+    lift = std::sqrt(Utilities::MPI::sum(contact->lift_energy_squared, comm));
+    largest_penetration =
+      Utilities::MPI::max(contact->largest_penetration, comm);
   }
 
   template <int dim>

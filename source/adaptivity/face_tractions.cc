@@ -67,8 +67,11 @@ namespace hrcontact
           usable[cell->active_cell_index()] =
             ok && holds(results.displacement, dofs);
         }
+    if (!results.system.contact_rows.empty())
+      contact_tractions = std::make_unique<ContactTractions>(results);
     classify_faces();
     cell_residuals();
+    subtract_contact_moments();
     solve_vertex_problems();
     // Moments to the linear traction's vertex values (the face's mass
     // matrix |F| / 6 [2 1; 1 2]).
@@ -123,6 +126,27 @@ namespace hrcontact
         }
   }
 
+  void
+  FaceTractions::subtract_contact_moments()
+  {
+    if (!contact_tractions)
+      return;
+    for (const auto &cell : results.triangulation().active_cell_iterators())
+      if (usable[cell->active_cell_index()])
+        for (const unsigned int f : cell->face_indices())
+          if (const auto *c = contact_tractions->find(cell->face(f)->index()))
+            {
+              const auto m =
+                ContactTractions::moments(*c, cell->face(f)->measure());
+              for (unsigned int fa = 0; fa < 2; ++fa)
+                for (const unsigned int v : cell->vertex_indices())
+                  if (cell->vertex_index(v) == cell->face(f)->vertex_index(fa))
+                    for (unsigned int i = 0; i < 2; ++i)
+                      cell_residual[cell->active_cell_index()][v][i] -=
+                        m[fa] * c->direction[i];
+            }
+  }
+
   Tensor<1, 2>
   FaceTractions::data_traction(const types::boundary_id id,
                                const Point<2>          &x,
@@ -169,6 +193,9 @@ namespace hrcontact
                data[i] :
                sign * ((1 - lambda) * f.value[0][i] + lambda * f.value[1][i] +
                        legendre * f.bubble[i]);
+    if (contact_tractions)
+      if (const auto *c = contact_tractions->find(face))
+        t += ContactTractions::traction(*c, lambda);
     return t;
   }
 

@@ -26,8 +26,9 @@ namespace hrcontact
       "summary.txt gets error_bound (absolute), error_bound_relative (to the "
       "energy of the computed stresses) and how exactly the reconstruction "
       "is admissible; with a Reference stress also the true energy error "
-      "and the effectivity index. So far 2D (hanging nodes included), "
-      "linear elastic bodies without contact.");
+      "and the effectivity index; with contact the contact term's share. "
+      "So far 2D (hanging nodes included), linear elastic bodies, contact "
+      "with straight obstacles (Contact/Obstacles).");
     prm.leave_subsection();
   }
 
@@ -76,6 +77,15 @@ namespace hrcontact
     summary.add("error_bound_traction_residual", tau.traction_residual);
     summary.add("error_bound_equilibrium_residual", tau.cell_residual);
     summary.add("error_bound_seconds", seconds);
+    if (!results.system.contact_rows.empty())
+      {
+        // The contact term's share of eta^2, and the lift that makes u_h
+        // non-penetrating (0 when the contact rows hold at the nodes).
+        summary.add("error_bound_contact_share",
+                    eta > 0 ? tau.contact_term / (eta * eta) : 0.);
+        summary.add("error_bound_lift", tau.lift);
+        summary.add("error_bound_largest_penetration", tau.largest_penetration);
+      }
     // Each cell's eta_K (its square sums to eta^2) for solution.vtu.
     Vector<float> &indicators = output.cell_fields["error_bound_indicator"];
     indicators.reinit(tau.cell_bound_squared().size());

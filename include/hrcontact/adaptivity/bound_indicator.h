@@ -10,8 +10,9 @@ namespace hrcontact
    * eta = |tau - C eps(u_h)|_{C^-1} >= |u - u_h|_E (EquilibratedStress,
    * doc/error-bounds.md). Unlike the other indicators its sum is an upper
    * bound of the error itself, so it also serves Mesh refinement/Target
-   * error. Covers what EquilibratedStress covers (2D, linear elastic bodies
-   * without contact); other scenes are refused by name before the first solve.
+   * error. Covers what EquilibratedStress covers (2D, linear elastic bodies,
+   * straight obstacles); other scenes are refused by name before the first
+   * solve.
    */
   template <int dim>
   class BoundIndicator : public RefinementIndicator<dim>

@@ -14,6 +14,8 @@
 
 namespace hrcontact
 {
+  class FaceTractions;
+
   /**
    * A statically admissible stress tau reconstructed from the HR stresses:
    * symmetric, div tau + f = 0 and tau n continuous across every face
@@ -34,8 +36,10 @@ namespace hrcontact
    * Exact for body forces of degree < CellEquilibration::degree and
    * tractions of degree <= CellEquilibration::degree on each face; other
    * data are projected. So far: 2D (with hanging nodes), linear
-   * elastic bodies, supports by prescribed displacements and point supports
-   * (no contact rows); other scenes are refused by name.
+   * elastic bodies, supports by prescribed displacements and point supports,
+   * unilateral contact with straight obstacles (ContactTractions: the
+   * contact faces' tractions, the contact term, the lift of a penetrating
+   * u_h); other scenes are refused by name.
    */
   template <int dim>
   class EquilibratedStress
@@ -79,6 +83,16 @@ namespace hrcontact
      */
     double traction_residual = 0, cell_residual = 0;
 
+    /**
+     * Contact (ContactTractions): the bound's contact term 2 int (-q) (g -
+     * v.d) over Gamma_c (included in cell_bound_squared(), on the faces'
+     * cells), the energy norm of the lift w = v - u_h that makes v meet the
+     * contact rows where u_h penetrates, and the largest penetration. With
+     * a lift, bound() = sqrt((eta_0 + |w|)^2 + contact_term) + |w| (triangle
+     * inequality), eta_0^2 the quadratic part.
+     */
+    double contact_term = 0, lift = 0, largest_penetration = 0;
+
     /** The energy norms against an exact stress field sigma. */
     struct Comparison
     {
@@ -96,6 +110,9 @@ namespace hrcontact
 
   private:
     const Results<dim> &results;
+    /** The contact term and the lift, after the cells (2D). */
+    void
+    add_contact_terms(const FaceTractions &faces);
     /** The polynomial coefficients of each cell's four triangles. */
     std::vector<dealii::Vector<double>> coefficients;
     std::vector<double>                 bound_squared;

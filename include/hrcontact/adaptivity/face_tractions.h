@@ -8,10 +8,12 @@
 
 #include <deal.II/lac/full_matrix.h>
 
+#include <hrcontact/adaptivity/contact_tractions.h>
 #include <hrcontact/core/results.h>
 
 #include <array>
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace hrcontact
@@ -97,6 +99,13 @@ namespace hrcontact
      * largest cell residual R_K: round-off when the HR equations hold. */
     double residual = 0;
 
+    /** The contact faces' tractions (null without contact rows). */
+    const ContactTractions *
+    contact() const
+    {
+      return contact_tractions.get();
+    }
+
   private:
     const Results<2> &results;
     /** Per active cell: whether this process holds its fields. */
@@ -108,8 +117,13 @@ namespace hrcontact
     std::vector<std::array<std::array<double, 2>, 2>> average;
     double                                            scale = 0;
 
+    std::unique_ptr<ContactTractions> contact_tractions;
+
     void
     classify_faces();
+    /** The contact faces' moments leave R_K as loaded faces' do. */
+    void
+    subtract_contact_moments();
     void
     cell_residuals();
     /** One cell's face moments from sigma_h at the unit points of

@@ -1,0 +1,156 @@
+// The guaranteed error bound with unilateral contact (doc/error-bounds.md,
+// ContactTractions):
+// - parameters/signorini-error-bound.prm, whose exact solution is known
+//   (the contact zone ends at x = 1/2 with zero pressure), at 4 x 4 to
+//   16 x 16 cells: effectivity in [1, 2], the reconstruction admissible to
+//   1e-9 (its tractions on the contact faces carry the nodal reactions and
+//   are compressive), the bound halves with h, the inequality |u - u_h|^2 +
+//   |sigma - tau|^2 <= eta^2 holds, the discrete contact zone ends within
+//   one node of x = 1/2;
+// - the displacement pushed into the obstacle: lifted back (its
+//   penetration shows), the bound grows and stays above the pushed field's
+//   true error;
+// - a curved obstacle is refused by name.
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/mapping_q1.h>
+
+#include <hrcontact/adaptivity/equilibrated_stress.h>
+#include <hrcontact/core/input.h>
+
+#include "tests.h"
+
+using namespace hrcontact_tests;
+
+namespace
+{
+  std::string
+  signorini(const unsigned int refinements)
+  {
+    std::string       text = read_file(std::string(SOURCE_DIR) +
+                                 "/../parameters/signorini-error-bound.prm");
+    const std::string from = "set Global refinements = 2";
+    text.replace(text.find(from),
+                 from.size(),
+                 "set Global refinements = " + std::to_string(refinements));
+    return text + "subsection Output\n  set Write solution = false\n"
+                  "  set Output directory = results\nend\n";
+  }
+
+  const std::string exact_stress =
+    "if(x<x0, -b*lam*(x-x0)^2, -6*k*y*(lam+2*mu)*(x-x0)); if(x<x0, "
+    "-b*(lam+2*mu)*(x-x0)^2, -6*k*lam*y*(x-x0)); if(x<x0, -2*b*mu*y*(x-x0), 0)";
+
+  // The bound of @p results, its inequality's slack and its true error.
+  struct Bound
+  {
+    double eta, error, slack, admissible, lift, penetration;
+  };
+  Bound
+  bound_of(const hrcontact::Results<2> &results)
+  {
+    hrcontact::EquilibratedStress<2> tau(results);
+    tau.compute();
+    const auto   reference = hrcontact::make_function<2>(exact_stress,
+                                                       3,
+                                                       results.scene.constants,
+                                                       "test");
+    const auto   c         = tau.compare(*reference);
+    const double eta       = tau.bound();
+    return {eta,
+            std::sqrt(c.displacement_error_squared),
+            (c.displacement_error_squared + c.reconstruction_error_squared) /
+                (eta * eta) -
+              1,
+            std::max(tau.traction_residual, tau.cell_residual),
+            tau.lift,
+            tau.largest_penetration};
+  }
+} // namespace
+
+int
+main()
+{
+  std::vector<double> bounds;
+  for (const unsigned int r : {1u, 2u, 3u})
+    {
+      const auto         problem = solve_from_text<2>(signorini(r));
+      std::ostringstream quiet;
+      problem->output_results(quiet);
+      const auto  &res = problem->results();
+      const auto  &s   = res.summary;
+      const Bound  b   = bound_of(res);
+      const double eff = s.get_double("effectivity_index");
+      // Pressed nodes: x <= 1/2 is n / 2 + 1 of the base's n + 1.
+      const unsigned int n       = 2u << r;
+      unsigned int       pressed = 0;
+      for (const bool released : res.contact->released)
+        pressed += released ? 0 : 1;
+      std::cout
+        << n << " x " << n << " cells: effectivity in [1, 2]: "
+        << (eff >= 1 && eff <= 2 ? "yes" : "NO") << " (" << std::setprecision(3)
+        << eff << "), the summary's bound "
+        << "is the inequality's: "
+        << check(std::abs(s.get_double("error_bound") / b.eta - 1), 1e-8)
+        << "\n  tau admissible to 1e-9: " << check(b.admissible, 1e-9)
+        << ", |u - u_h|^2 + |sigma - tau|^2 <= eta^2 (1 + 1e-9): "
+        << check(b.slack, 1e-9) << "\n  contact term's share "
+        << (s.get_double("error_bound_contact_share") >= 0 ? "nonnegative" :
+                                                             "NEGATIVE")
+        << ", no penetration to lift: "
+        << check(s.get_double("error_bound_lift"), 0) << ", pressed nodes "
+        << pressed << " (exact " << n / 2 + 1 << ", within one: "
+        << (pressed + 1 >= n / 2 + 1 && pressed <= n / 2 + 2 ? "yes" : "NO")
+        << ")" << std::endl;
+      bounds.push_back(b.eta);
+    }
+  for (unsigned int i = 1; i < bounds.size(); ++i)
+    std::cout << "  bound ratio to the previous mesh in [1.8, 2.2]: "
+              << (bounds[i - 1] / bounds[i] >= 1.8 &&
+                      bounds[i - 1] / bounds[i] <= 2.2 ?
+                    "yes" :
+                    "NO")
+              << std::endl;
+
+  // u_h pushed into the obstacle by c (1 - y / 2) (1 + x): v = u_h + w
+  // lifts the base's nodes back; the bound covers the pushed field.
+  {
+    const auto                    problem = solve_from_text<2>(signorini(2));
+    auto                          pushed(problem->results());
+    const auto                   &dh = pushed.spaces.dof_handler_displacement;
+    std::vector<dealii::Point<2>> support(dh.n_dofs());
+    dealii::DoFTools::map_dofs_to_support_points(
+      dealii::StaticMappingQ1<2>::mapping, dh, support);
+    const double c = 0.05 * pushed.displacement.linfty_norm();
+    for (unsigned int i = 1; i < support.size(); i += 2)
+      pushed.displacement(i) -=
+        c * (1 - support[i][1] / 2) * (1 + support[i][0]);
+    const Bound original = bound_of(problem->results()), b = bound_of(pushed);
+    std::cout << "pushed into the obstacle: penetration lifted "
+              << (b.penetration > 0 && b.penetration <= 2 * c ?
+                    "(0, 2 c]" :
+                    "NOT in (0, 2 c]")
+              << ", lift energy positive: " << (b.lift > 0 ? "yes" : "NO")
+              << ", the bound grows: " << (b.eta > original.eta ? "yes" : "NO")
+              << ", stays above the true error: "
+              << (b.eta >= b.error ? "yes" : "NO") << std::endl;
+  }
+
+  // A curved obstacle: the gap is not linear along a face.
+  try
+    {
+      std::string text = signorini(1);
+      text.replace(text.find("set Obstacles = 2: 0, 0 : 0, -1"),
+                   std::string("set Obstacles = 2: 0, 0 : 0, -1").size(),
+                   "set Curved obstacles = 2: circle : 0.5, -10 : 10");
+      const auto         problem = solve_from_text<2>(text);
+      std::ostringstream quiet;
+      problem->output_results(quiet);
+      std::cout << "curved obstacle: NOT refused" << std::endl;
+    }
+  catch (const hrcontact::InputError &e)
+    {
+      std::cout << "curved obstacle: refused: " << e.what() << std::endl;
+    }
+}
