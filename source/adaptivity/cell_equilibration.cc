@@ -137,6 +137,10 @@ namespace hrcontact
           std::llround((split.P[k][d] - split.P[0][d]) / split.h * 1e10));
     if (const auto it = cache.find(key); it != cache.end())
       return it->second;
+    // A mesh of distinct shapes (curved, graded) would keep one set per
+    // cell (some 100 kB each): past 512 sets the cache starts over.
+    if (cache.size() >= 512)
+      cache.clear();
 
     const TrianglePolynomials &P      = polynomials;
     const unsigned int         n_tri  = split.n_triangles();
@@ -181,11 +185,17 @@ namespace hrcontact
     while (rank < std::min(n_rows, n) &&
            svd.singular_value(rank) > 1e-11 * svd.singular_value(0))
       ++rank;
-    FullMatrix<double> pinv(n, n_rows), N(n, n - rank);
+    // A^+ = V_r Sigma_r^-1 U_r^T (one BLAS product).
+    FullMatrix<double> pinv(n, n_rows), N(n, n - rank), VS(n, rank),
+      Ur(n_rows, rank);
     for (unsigned int l = 0; l < rank; ++l)
-      for (unsigned int i = 0; i < n; ++i)
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          VS(i, l) = VT(l, i) / svd.singular_value(l);
         for (unsigned int j = 0; j < n_rows; ++j)
-          pinv(i, j) += VT(l, i) * U(j, l) / svd.singular_value(l);
+          Ur(j, l) = U(j, l);
+      }
+    VS.mTmult(pinv, Ur);
     for (unsigned int l = rank; l < n; ++l)
       for (unsigned int i = 0; i < n; ++i)
         N(i, l - rank) = VT(l, i);
