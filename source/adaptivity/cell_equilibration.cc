@@ -22,6 +22,47 @@ namespace hrcontact
         r *= 2 * s - 1;
       return r;
     }
+    /**
+     * A = U Sigma V^T: its pseudo-inverse, its null space N and its left
+     * null space U_0 (A x - c = (A A^+ - I) c = -U_0 U_0^T c: what of the
+     * data no admissible field can meet).
+     */
+    void
+    pseudo_inverse_and_null_spaces(const FullMatrix<double> &A,
+                                   FullMatrix<double>       &pinv,
+                                   FullMatrix<double>       &N,
+                                   FullMatrix<double>       &left_null)
+    {
+      const unsigned int       n_rows = A.m(), n = A.n();
+      LAPACKFullMatrix<double> svd(n_rows, n);
+      svd = A;
+      svd.compute_svd();
+      const auto  &U    = svd.get_svd_u();
+      const auto  &VT   = svd.get_svd_vt();
+      unsigned int rank = 0;
+      while (rank < std::min(n_rows, n) &&
+             svd.singular_value(rank) > 1e-11 * svd.singular_value(0))
+        ++rank;
+      // A^+ = V_r Sigma_r^-1 U_r^T (one BLAS product).
+      FullMatrix<double> VS(n, rank), Ur(n_rows, rank);
+      for (unsigned int l = 0; l < rank; ++l)
+        {
+          for (unsigned int i = 0; i < n; ++i)
+            VS(i, l) = VT(l, i) / svd.singular_value(l);
+          for (unsigned int j = 0; j < n_rows; ++j)
+            Ur(j, l) = U(j, l);
+        }
+      pinv.reinit(n, n_rows);
+      VS.mTmult(pinv, Ur);
+      N.reinit(n, n - rank);
+      for (unsigned int l = rank; l < n; ++l)
+        for (unsigned int i = 0; i < n; ++i)
+          N(i, l - rank) = VT(l, i);
+      left_null.reinit(n_rows, n_rows - rank);
+      for (unsigned int l = rank; l < n_rows; ++l)
+        for (unsigned int j = 0; j < n_rows; ++j)
+          left_null(j, l - rank) = U(j, l);
+    }
   } // namespace
 
   CellEquilibration::CellEquilibration(const Results<2>    &results,
@@ -175,30 +216,9 @@ namespace hrcontact
                 H(P.index(q / n_k, c1, m1), P.index(q / n_k, c2, m2)) +=
                   v * S(c1, c2);
           }
-    // A = U Sigma V^T: the pseudo-inverse and the null space N.
-    LAPACKFullMatrix<double> svd(n_rows, n);
-    svd = A;
-    svd.compute_svd();
-    const auto  &U    = svd.get_svd_u();
-    const auto  &VT   = svd.get_svd_vt();
-    unsigned int rank = 0;
-    while (rank < std::min(n_rows, n) &&
-           svd.singular_value(rank) > 1e-11 * svd.singular_value(0))
-      ++rank;
-    // A^+ = V_r Sigma_r^-1 U_r^T (one BLAS product).
-    FullMatrix<double> pinv(n, n_rows), N(n, n - rank), VS(n, rank),
-      Ur(n_rows, rank);
-    for (unsigned int l = 0; l < rank; ++l)
-      {
-        for (unsigned int i = 0; i < n; ++i)
-          VS(i, l) = VT(l, i) / svd.singular_value(l);
-        for (unsigned int j = 0; j < n_rows; ++j)
-          Ur(j, l) = U(j, l);
-      }
-    VS.mTmult(pinv, Ur);
-    for (unsigned int l = rank; l < n; ++l)
-      for (unsigned int i = 0; i < n; ++i)
-        N(i, l - rank) = VT(l, i);
+    FullMatrix<double> pinv, N;
+    pseudo_inverse_and_null_spaces(A, pinv, N, F.left_null);
+    const unsigned int rank = n - N.n();
     // M_g = N (N^T H N)^{-1} N^T, M_c = A^+ - M_g H A^+.
     FullMatrix<double> HN(n, n - rank), K(n - rank, n - rank), NK(n, n - rank),
       HP(n, n_rows), MHP(n, n_rows);
@@ -212,12 +232,6 @@ namespace hrcontact
     F.M_g.mmult(MHP, HP);
     F.M_c = pinv;
     F.M_c.add(-1., MHP);
-    // A x - c = (A A^+ - I) c = -U_0 U_0^T c, U_0 the left null space: what
-    // of the data no admissible field can meet.
-    F.left_null.reinit(n_rows, n_rows - rank);
-    for (unsigned int l = rank; l < n_rows; ++l)
-      for (unsigned int j = 0; j < n_rows; ++j)
-        F.left_null(j, l - rank) = U(j, l);
     // On a parallelogram eps(u_h) is linear, e = sum_a e_a b_a with b = (1,
     // xi, eta): g = G e_a and M_g g = (M_g G) e_a; e_a from three points.
     if (split.parallelogram())
