@@ -10,6 +10,9 @@
 // - the displacement pushed into the obstacle: lifted back (its
 //   penetration shows), the bound grows and stays above the pushed field's
 //   true error;
+// - parameters/hertz.prm at 192 cells (a curved body on a straight
+//   obstacle, released nodes with round-off reactions): admissible to 1e-9,
+//   no lift, the contact term's share below 1e-6;
 // - a curved obstacle is refused by name.
 
 #include <deal.II/dofs/dof_tools.h>
@@ -135,6 +138,32 @@ main()
               << ", the bound grows: " << (b.eta > original.eta ? "yes" : "NO")
               << ", stays above the true error: "
               << (b.eta >= b.error ? "yes" : "NO") << std::endl;
+  }
+
+  // Hertz: the cylinder on the plane, 192 cells.
+  {
+    std::string text =
+      read_file(std::string(SOURCE_DIR) + "/../parameters/hertz.prm");
+    const std::string from = "set Global refinements = 4";
+    text.replace(text.find(from), from.size(), "set Global refinements = 3");
+    const auto problem = solve_from_text<2>(
+      text + "subsection Postprocess\n  set Error bound = true\n"
+             "  set Pressure plot = false\nend\n"
+             "subsection Output\n  set Write solution = false\n"
+             "  set Output directory = results-hertz\nend\n");
+    std::ostringstream quiet;
+    problem->output_results(quiet);
+    const auto &s = problem->results().summary;
+    std::cout
+      << "Hertz, " << s.get("cells") << " cells: tau admissible to 1e-9: "
+      << check(std::max(s.get_double("error_bound_traction_residual"),
+                        s.get_double("error_bound_equilibrium_residual")),
+               1e-9)
+      << ", no lift: " << check(s.get_double("error_bound_lift"), 0)
+      << ", contact term's share below 1e-6: "
+      << check(s.get_double("error_bound_contact_share"), 1e-6) << ", bound "
+      << std::setprecision(3) << 100 * s.get_double("error_bound_relative")
+      << " %" << std::endl;
   }
 
   // A curved obstacle: the gap is not linear along a face.
