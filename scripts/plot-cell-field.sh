@@ -4,13 +4,24 @@
 # error_bound_indicator (doc/error-bounds.md).
 #   bash scripts/plot-cell-field.sh output/l-shape-error-bound/solution.vtu \
 #        error_bound_indicator doc/l-shape-error-bound.png
+# An optional fourth argument XMIN:XMAX:YMIN:YMAX shows only that window
+# (e.g. the contact zone of a Hertz mesh); MESH_LINES=0 leaves out the cell
+# edges (a mesh of 10^5 cells is black with them).
 # Reads deal.II's compressed binary VTU with Python's standard library;
 # needs gnuplot (Debian: apt-get install gnuplot-nox).
 set -euo pipefail
-[ $# -eq 3 ] || { echo "usage: $0 SOLUTION.vtu FIELD OUT.png" >&2; exit 2; }
+[ $# -eq 3 ] || [ $# -eq 4 ] || { echo "usage: $0 SOLUTION.vtu FIELD OUT.png [XMIN:XMAX:YMIN:YMAX]" >&2; exit 2; }
 command -v gnuplot > /dev/null || { echo "gnuplot is missing: apt-get install gnuplot-nox" >&2; exit 1; }
-vtu=$1 field=$2 png=$3
+vtu=$1 field=$2 png=$3 window=${4:-}
+ranges=""
+if [ -n "$window" ]; then
+  IFS=: read -r x0 x1 y0 y1 <<< "$window"
+  ranges="set xrange [$x0:$x1]
+set yrange [$y0:$y1]"
+fi
 data=$(mktemp)
+lines=', "'"$data"'" using 1:2 with lines lc rgb "#404040" lw 0.3'
+[ "${MESH_LINES:-1}" = 0 ] && lines=""
 trap 'rm -f "$data"' EXIT
 python3 - "$vtu" "$field" > "$data" <<'PY'
 import base64, re, struct, sys, zlib
@@ -51,11 +62,12 @@ gnuplot <<GP
 set terminal pngcairo size 900,800
 set output "$png"
 set size ratio -1
+$ranges
 set logscale cb
 set format cb "%.0e"
 set palette rgb 33,13,10
 set cblabel "$field" noenhanced
 unset key
-plot "$data" using 1:2:3 with filledcurves fc palette, "$data" using 1:2 with lines lc rgb "#404040" lw 0.3
+plot "$data" using 1:2:3 with filledcurves fc palette$lines
 GP
 echo "plot-cell-field: $png"
