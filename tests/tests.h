@@ -431,6 +431,45 @@ namespace hrcontact_tests
       c.p_difference /= p_max;
     return c;
   }
+
+  /**
+   * parameters/NAME.prm with its `Global refinements = FROM` set to
+   * REFINEMENTS, no solution file, results in ./results: a shipped scene
+   * at another mesh.
+   */
+  inline std::string
+  scene_at_refinement(const std::string &name,
+                      const unsigned int from,
+                      const unsigned int refinements)
+  {
+    std::string text =
+      read_file(std::string(SOURCE_DIR) + "/../parameters/" + name + ".prm");
+    const std::string entry =
+      "set Global refinements = " + std::to_string(from);
+    text.replace(text.find(entry),
+                 entry.size(),
+                 "set Global refinements = " + std::to_string(refinements));
+    return text + "subsection Output\n  set Write solution = false\n"
+                  "  set Output directory = results\nend\n";
+  }
+
+  /** Runs @p text (solve and results) where an InputError is due: prints
+   * "WHAT: refused: <its message>" or "WHAT: NOT refused". */
+  inline void
+  print_input_refusal(const std::string &what, const std::string &text)
+  {
+    try
+      {
+        const auto         problem = solve_from_text<2>(text);
+        std::ostringstream quiet;
+        problem->output_results(quiet);
+        std::cout << what << ": NOT refused" << std::endl;
+      }
+    catch (const hrcontact::InputError &e)
+      {
+        std::cout << what << ": refused: " << e.what() << std::endl;
+      }
+  }
 } // namespace hrcontact_tests
 
 namespace hrcontact_tests
