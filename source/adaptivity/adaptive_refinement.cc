@@ -81,7 +81,8 @@ namespace hrcontact
         "Adaptive cycles run). Adaptive cycles is then the most cycles "
         "tried; a run that ends above the target says so in the log and in "
         "summary.txt (target_error_reached = 0). The bound covers 2D linear "
-        "elastic bodies, contact with straight obstacles included, so far; "
+        "elastic and Ramberg-Osgood bodies, contact with straight obstacles "
+        "included, so far; "
         "it is computed each cycle "
         "(with Estimator = bound, once for both).");
       prm.declare_entry("Maximum dofs",

@@ -37,5 +37,6 @@ namespace hrcontact
     "bound",
     "each cell's share of the guaranteed error bound (the Prager-Synge "
     "distance of an equilibrated stress to C eps(u_h), doc/error-bounds.md; "
-    "2D, linear elastic bodies, contact with straight obstacles)")
+    "2D, linear elastic and Ramberg-Osgood bodies, contact with straight "
+    "obstacles)")
 } // namespace hrcontact

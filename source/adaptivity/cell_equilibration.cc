@@ -317,14 +317,24 @@ namespace hrcontact
                            double &bound_squared,
                            double &energy_squared)
   {
-    const TriangleSplit split(cell);
+    const TriangleSplit   split(cell);
+    const MaterialLaw<2> &law = results.scene.material_of(cell->material_id());
+    const bool            nonlinear = !law.is_linear();
     // Exact for the energy's degree 2p on a parallelogram (eps(u_h)
-    // linear); more points where eps(u_h) is rational.
-    const unsigned int n_tri = split.parallelogram() ? degree + 1 : degree + 5;
+    // linear); more points where eps(u_h) is rational or the law is not
+    // quadratic.
+    const unsigned int n_tri =
+      split.parallelogram() && !nonlinear ? degree + 1 : degree + 5;
     points.clear();
     weights.clear();
     split.rule(n_tri, points, weights);
     sampler(cell, split, points, eps, sigma_h);
+    // A nonlinear law: tau nearest (in the elastic compliance S) to the
+    // stress of u_h's strain, whose S-strain takes eps's place below.
+    target.resize(points.size());
+    if (nonlinear)
+      for (unsigned int q = 0; q < points.size(); ++q)
+        target[q] = stress_at_strain(law, eps[q], points[q]);
     const Factors &F = factors(split, cell->material_id(), points, weights);
 
     const unsigned int n_k = points.size() / split.n_triangles();
@@ -337,7 +347,7 @@ namespace hrcontact
     const double scale = F.h / split.h;
     xg.reinit(x.size());
     F.M_c.vmult(x, c);
-    if (F.M_g_G.m() > 0)
+    if (F.M_g_G.m() > 0 && !nonlinear)
       {
         // The strain's linear coefficients (xx, yy, 2 xy; 1, xi, eta).
         Vector<double> e_a(9);
@@ -355,9 +365,14 @@ namespace hrcontact
     else
       {
         g.reinit(x.size());
+        const FullMatrix<double> &S = compliances(cell->material_id()).first;
         for (unsigned int q = 0; q < points.size(); ++q)
           {
-            const double e[3] = {eps[q][0][0], eps[q][1][1], 2 * eps[q][0][1]};
+            double e[3] = {eps[q][0][0], eps[q][1][1], 2 * eps[q][0][1]};
+            if (nonlinear)
+              for (unsigned int cc = 0; cc < 3; ++cc)
+                e[cc] = S(cc, 0) * target[q][0][0] +
+                        S(cc, 1) * target[q][1][1] + S(cc, 2) * target[q][0][1];
             for (unsigned int m = 0; m < n_m; ++m)
               {
                 const double v = weights[q] * F.values(q, m);
@@ -376,6 +391,11 @@ namespace hrcontact
     if (sigma_max > 0)
       residual = std::max(residual, Ax.linfty_norm() / (sigma_max * split.h));
 
+    if (nonlinear)
+      {
+        fenchel_young(law, F, x, bound_squared, energy_squared);
+        return;
+      }
     // This cell's share of eta^2 (tau - C eps(u_h), with C eps = S^-1 e)
     // and of the computed stresses' energy.
     const auto &[S, S_inv] = compliances(cell->material_id());
@@ -405,6 +425,36 @@ namespace hrcontact
                              sigma_h[q][1][1],
                              sigma_h[q][0][1]};
         energy_squared += weights[q] * energy(s);
+      }
+  }
+
+  void
+  CellEquilibration::fenchel_young(const MaterialLaw<2> &law,
+                                   const Factors        &F,
+                                   const Vector<double> &x,
+                                   double               &bound_squared,
+                                   double               &energy_squared) const
+  {
+    const unsigned int n_k = points.size() / (x.size() / (3 * F.values.n()));
+    bound_squared = energy_squared = 0;
+    for (unsigned int q = 0; q < points.size(); ++q)
+      {
+        const unsigned int    k = q / n_k;
+        SymmetricTensor<2, 2> tau;
+        for (unsigned int m = 0; m < F.values.n(); ++m)
+          {
+            tau[0][0] += x(polynomials.index(k, 0, m)) * F.values(q, m);
+            tau[1][1] += x(polynomials.index(k, 1, m)) * F.values(q, m);
+            tau[0][1] += x(polynomials.index(k, 2, m)) * F.values(q, m);
+          }
+        const Point<2> &p = points[q];
+        // phi^c(tau) + W(eps) - tau : eps, W(eps) = s : eps - phi^c(s).
+        const double gap = law.complementary_energy(tau, p) -
+                           law.complementary_energy(target[q], p) -
+                           (tau - target[q]) * eps[q];
+        bound_squared += weights[q] * 2 * gap;
+        energy_squared +=
+          weights[q] * 2 * law.complementary_energy(sigma_h[q], p);
       }
   }
 } // namespace hrcontact

@@ -31,9 +31,17 @@ namespace hrcontact
                          " yet (of the contact and normal kinds only "
                          "Contact/Obstacles: straight obstacles, along whose "
                          "faces the gap is linear).");
-    if (!scene.all_linear() || scene.stress_constraint)
-      throw InputError(what + " needs linear elastic bodies so far (no "
-                              "Admissible stresses, no nonlinear law).");
+    if (scene.stress_constraint)
+      throw InputError(what + " does not cover Admissible stresses yet (a "
+                              "reconstruction inside the cone).");
+    // A nonlinear law needs its complementary potential (the Fenchel-Young
+    // gap).
+    for (unsigned int body = 0; body < std::max(1u, scene.n_bodies); ++body)
+      if (std::isnan(scene.material_of(body).complementary_energy(
+            SymmetricTensor<2, dim>(), Point<dim>())))
+        throw InputError(what + " needs a law that gives its complementary "
+                                "potential (linear elasticity, "
+                                "Ramberg-Osgood).");
   }
 
   template <int dim>
@@ -166,6 +174,15 @@ namespace hrcontact
               const auto energy = [&](const SymmetricTensor<2, dim> &s) {
                 return s * law.strain(s, Point<dim>());
               };
+              // A nonlinear law: twice the Bregman distances of phi^c,
+              // which are |.|^2 / 2 for a linear one.
+              const auto bregman = [&](const SymmetricTensor<2, dim> &a,
+                                       const SymmetricTensor<2, dim> &b,
+                                       const Point<dim>              &p) {
+                return 2 * (law.complementary_energy(a, p) -
+                            law.complementary_energy(b, p) -
+                            (a - b) * law.strain(b, p));
+              };
               for (unsigned int q = 0; q < points.size(); ++q)
                 {
                   reference.vector_value(points[q], ref);
@@ -175,13 +192,31 @@ namespace hrcontact
                                        split,
                                        q / (n_tri * n_tri),
                                        points[q]);
-                  const auto   Ceps = elastic_stress(eps[q]);
-                  const double w    = weights[q];
-                  result.displacement_error_squared += w * energy(sigma - Ceps);
+                  const double w = weights[q];
+                  if (law.is_linear())
+                    {
+                      const auto Ceps = elastic_stress(eps[q]);
+                      result.displacement_error_squared +=
+                        w * energy(sigma - Ceps);
+                      result.reconstruction_error_squared +=
+                        w * energy(sigma - tau);
+                      result.stress_error_squared +=
+                        w * energy(sigma - sigma_h[q]);
+                      result.reference_energy_squared += w * energy(sigma);
+                      continue;
+                    }
+                  // W(eps_h) - W(eps) - sigma : (eps_h - eps) = the Bregman
+                  // distance of phi^c from W'(eps_h) to sigma.
+                  const SymmetricTensor<2, dim> s_h =
+                    stress_at_strain(law, eps[q], points[q]);
+                  result.displacement_error_squared +=
+                    w * bregman(sigma, s_h, points[q]);
                   result.reconstruction_error_squared +=
-                    w * energy(sigma - tau);
-                  result.stress_error_squared += w * energy(sigma - sigma_h[q]);
-                  result.reference_energy_squared += w * energy(sigma);
+                    w * bregman(tau, sigma, points[q]);
+                  result.stress_error_squared +=
+                    w * bregman(sigma_h[q], sigma, points[q]);
+                  result.reference_energy_squared +=
+                    w * 2 * law.complementary_energy(sigma, points[q]);
                 }
             }
       }

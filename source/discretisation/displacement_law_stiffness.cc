@@ -14,34 +14,6 @@ namespace hrcontact
 {
   using namespace dealii;
 
-  namespace
-  {
-    /** The law's compliance at sigma as a fourth-order tensor C, C : tau =
-     * MaterialLaw::compliance_times(sigma, tau). */
-    template <int dim>
-    SymmetricTensor<4, dim>
-    compliance_tensor(const MaterialLaw<dim>        &law,
-                      const SymmetricTensor<2, dim> &sigma,
-                      const Point<dim>              &x)
-    {
-      SymmetricTensor<4, dim> C;
-      for (unsigned int k = 0; k < dim; ++k)
-        for (unsigned int l = k; l < dim; ++l)
-          {
-            // tau with ones at (k, l) and (l, k): C : tau = 2 C_ijkl off
-            // the diagonal.
-            SymmetricTensor<2, dim> tau;
-            tau[k][l] = 1;
-            const SymmetricTensor<2, dim> c =
-              law.compliance_times(sigma, tau, x);
-            const double scale = (k == l) ? 1. : 0.5;
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = i; j < dim; ++j)
-                C[i][j][k][l] = scale * c[i][j];
-          }
-      return C;
-    }
-  } // namespace
 
   template <int dim>
   DisplacementLawStiffness<dim>::DisplacementLawStiffness(

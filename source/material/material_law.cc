@@ -70,6 +70,79 @@ namespace hrcontact
                      "' (known: " + names + ").");
   }
 
+  template <int dim>
+  SymmetricTensor<4, dim>
+  compliance_tensor(const MaterialLaw<dim>        &law,
+                    const SymmetricTensor<2, dim> &sigma,
+                    const Point<dim>              &x)
+  {
+    SymmetricTensor<4, dim> C;
+    for (unsigned int k = 0; k < dim; ++k)
+      for (unsigned int l = k; l < dim; ++l)
+        {
+          // tau with ones at (k, l) and (l, k): C : tau = 2 C_ijkl off the
+          // diagonal.
+          SymmetricTensor<2, dim> tau;
+          tau[k][l]                       = 1;
+          const SymmetricTensor<2, dim> c = law.compliance_times(sigma, tau, x);
+          const double                  scale = (k == l) ? 1. : 0.5;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = i; j < dim; ++j)
+              C[i][j][k][l] = scale * c[i][j];
+        }
+    return C;
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  stress_at_strain(const MaterialLaw<dim>        &law,
+                   const SymmetricTensor<2, dim> &eps,
+                   const Point<dim>              &x)
+  {
+    SymmetricTensor<2, dim> s =
+      invert(compliance_tensor(law, SymmetricTensor<2, dim>(), x)) * eps;
+    double misfit = (law.strain(s, x) - eps).norm();
+    for (unsigned int step = 0; step < 50; ++step)
+      {
+        if (misfit <= 1e-14 * eps.norm() || misfit == 0)
+          return s;
+        const SymmetricTensor<2, dim> ds =
+          invert(compliance_tensor(law, s, x)) * (law.strain(s, x) - eps);
+        double length = 1;
+        for (unsigned int halving = 0; halving < 30; ++halving, length /= 2)
+          {
+            const double m = (law.strain(s - length * ds, x) - eps).norm();
+            if (m < misfit || halving == 29)
+              {
+                s -= length * ds;
+                misfit = m;
+                break;
+              }
+          }
+      }
+    if (misfit <= 1e-10 * eps.norm())
+      return s;
+    throw NotConvergedError("inverting the material law for the stress of a "
+                            "strain did not converge in 50 Newton steps.");
+  }
+
+  template SymmetricTensor<4, 2>
+  compliance_tensor(const MaterialLaw<2> &,
+                    const SymmetricTensor<2, 2> &,
+                    const Point<2> &);
+  template SymmetricTensor<4, 3>
+  compliance_tensor(const MaterialLaw<3> &,
+                    const SymmetricTensor<2, 3> &,
+                    const Point<3> &);
+  template SymmetricTensor<2, 2>
+  stress_at_strain(const MaterialLaw<2> &,
+                   const SymmetricTensor<2, 2> &,
+                   const Point<2> &);
+  template SymmetricTensor<2, 3>
+  stress_at_strain(const MaterialLaw<3> &,
+                   const SymmetricTensor<2, 3> &,
+                   const Point<3> &);
+
   template class MaterialLawFactory<2>;
   template class MaterialLawFactory<3>;
 } // namespace hrcontact

@@ -125,6 +125,17 @@ namespace hrcontact
   }
 
   template <int dim>
+  double
+  RambergOsgood<dim>::complementary_energy(const SymmetricTensor<2, dim> &sigma,
+                                           const Point<dim> &x) const
+  {
+    const double eq = equivalent_stress(sigma);
+    return elastic.complementary_energy(sigma, x) +
+           a * sigma_0 * sigma_0 / (elastic.youngs_modulus() * (n + 1)) *
+             std::pow(eq / sigma_0, n + 1);
+  }
+
+  template <int dim>
   SymmetricTensor<2, dim>
   RambergOsgood<dim>::compliance_times(const SymmetricTensor<2, dim> &sigma,
                                        const SymmetricTensor<2, dim> &tau,

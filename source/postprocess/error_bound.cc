@@ -27,7 +27,8 @@ namespace hrcontact
       "energy of the computed stresses) and how exactly the reconstruction "
       "is admissible; with a Reference stress also the true energy error "
       "and the effectivity index; with contact the contact term's share. "
-      "So far 2D (hanging nodes included), linear elastic bodies, contact "
+      "So far 2D (hanging nodes included), linear elastic and Ramberg-Osgood "
+      "bodies (the Fenchel-Young gap), contact "
       "with straight obstacles (Contact/Obstacles).");
     prm.leave_subsection();
   }

@@ -10,7 +10,8 @@ namespace hrcontact
    * eta = |tau - C eps(u_h)|_{C^-1} >= |u - u_h|_E (EquilibratedStress,
    * doc/error-bounds.md). Unlike the other indicators its sum is an upper
    * bound of the error itself, so it also serves Mesh refinement/Target
-   * error. Covers what EquilibratedStress covers (2D, linear elastic bodies,
+   * error. Covers what EquilibratedStress covers (2D, linear elastic and
+   * Ramberg-Osgood bodies,
    * straight obstacles); other scenes are refused by name before the first
    * solve.
    */

@@ -102,7 +102,21 @@ namespace hrcontact
     std::vector<dealii::Point<2>>              points;
     std::vector<double>                        weights;
     std::vector<dealii::SymmetricTensor<2, 2>> eps, sigma_h;
+    /** A nonlinear law: the stress of u_h's strain, W'(eps(u_h)), per
+     * point. */
+    std::vector<dealii::SymmetricTensor<2, 2>> target;
     dealii::Vector<double>                     c, g, xg, Ax;
+    /**
+     * A nonlinear law's share of the bound: eta_K^2 = 2 int [phi^c(tau) +
+     * W(eps(u_h)) - tau : eps(u_h)] (the Fenchel-Young gap, W(eps) =
+     * s : eps - phi^c(s) at s = W'(eps)), and 2 int phi^c(sigma_h).
+     */
+    void
+    fenchel_young(const MaterialLaw<2>         &law,
+                  const Factors                &F,
+                  const dealii::Vector<double> &x,
+                  double                       &bound_squared,
+                  double                       &energy_squared) const;
     /** The constraints' rows on a split. */
     unsigned int
     n_rows(const TriangleSplit &split) const;

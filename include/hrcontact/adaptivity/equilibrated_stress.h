@@ -36,10 +36,13 @@ namespace hrcontact
    * Exact for body forces of degree < CellEquilibration::degree and
    * tractions of degree <= CellEquilibration::degree on each face; other
    * data are projected. So far: 2D (with hanging nodes), linear
-   * elastic bodies, supports by prescribed displacements and point supports,
-   * unilateral contact with straight obstacles (ContactTractions: the
-   * contact faces' tractions, the contact term, the lift of a penetrating
-   * u_h); other scenes are refused by name.
+   * elastic bodies and nonlinear laws that give their complementary
+   * potential (Ramberg-Osgood: eta^2 is then twice the Fenchel-Young gap
+   * int phi^c(tau) + W(eps(u_h)) - tau : eps(u_h), CellEquilibration), supports
+   * by prescribed displacements and point supports, unilateral contact with
+   * straight obstacles (ContactTractions: the contact faces' tractions, the
+   * contact term, the lift of a penetrating u_h); other scenes are refused by
+   * name.
    */
   template <int dim>
   class EquilibratedStress

@@ -28,6 +28,14 @@ namespace hrcontact
     compliance_times(const dealii::SymmetricTensor<2, dim> &sigma,
                      const dealii::SymmetricTensor<2, dim> &tau,
                      const dealii::Point<dim>              &x) const override;
+    /** sigma : E^{-1} sigma / 2. */
+    double
+    complementary_energy(const dealii::SymmetricTensor<2, dim> &sigma,
+                         const dealii::Point<dim> &x) const override
+    {
+      return 0.5 * (sigma * strain(sigma, x));
+    }
+
     bool
     is_linear() const override;
     /** E and nu are constants. */

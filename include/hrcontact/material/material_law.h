@@ -10,6 +10,7 @@
 #include <hrcontact/core/input.h>
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -55,6 +56,20 @@ namespace hrcontact
                      const dealii::SymmetricTensor<2, dim> &tau,
                      const dealii::Point<dim>              &x) const = 0;
 
+    /**
+     * The complementary potential phi^c(sigma) itself, whose gradient is
+     * strain(): the error bound's Fenchel-Young gap (doc/error-bounds.md).
+     * NaN for a law that does not give it.
+     */
+    virtual double
+    complementary_energy(const dealii::SymmetricTensor<2, dim> &sigma,
+                         const dealii::Point<dim>              &x) const
+    {
+      (void)sigma;
+      (void)x;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
     /** Whether the compliance is the same at every stress (F fixed). */
     virtual bool
     is_linear() const = 0;
@@ -98,6 +113,27 @@ namespace hrcontact
       return nullptr;
     }
   };
+
+  /** The law's compliance at sigma as a fourth-order tensor C, C : tau =
+   * MaterialLaw::compliance_times(sigma, tau). */
+  template <int dim>
+  dealii::SymmetricTensor<4, dim>
+  compliance_tensor(const MaterialLaw<dim>                &law,
+                    const dealii::SymmetricTensor<2, dim> &sigma,
+                    const dealii::Point<dim>              &x);
+
+  /**
+   * The stress whose strain is @p eps: the law inverted by Newton's method
+   * on strain(sigma) = eps (the compliance its Jacobian, steps halved while
+   * they do not reduce the misfit), from the elastic stress. It maximises
+   * sigma : eps - phi^c(sigma), so phi^c's conjugate is W(eps) = sigma :
+   * eps - phi^c(sigma) there. Throws NotConvergedError after 50 steps.
+   */
+  template <int dim>
+  dealii::SymmetricTensor<2, dim>
+  stress_at_strain(const MaterialLaw<dim>                &law,
+                   const dealii::SymmetricTensor<2, dim> &eps,
+                   const dealii::Point<dim>              &x);
 
   /**
    * The name -> factory registry of material laws and the Material/Model

@@ -10,7 +10,7 @@ namespace hrcontact
    * hardening deviatoric part, given by its convex complementary potential
    *
    *   phi^c(sigma) = sigma : E^{-1} sigma / 2
-   *                  + a sigma_0 / (E (n + 1)) (sigma_eq / sigma_0)^(n + 1),
+   *                  + a sigma_0^2 / (E (n + 1)) (sigma_eq / sigma_0)^(n + 1),
    *
    * sigma_eq = sqrt(3/2 s : s), s the deviator of sigma, so that
    *
@@ -42,6 +42,10 @@ namespace hrcontact
      * The Hessian of phi^c applied to tau: E^{-1} tau + 3/2 a/E
      * (sigma_eq/sigma_0)^(n-1) [dev tau + 3/2 (n-1) (s : tau)/sigma_eq^2 s].
      */
+    double
+    complementary_energy(const dealii::SymmetricTensor<2, dim> &sigma,
+                         const dealii::Point<dim> &x) const override;
+
     dealii::SymmetricTensor<2, dim>
     compliance_times(const dealii::SymmetricTensor<2, dim> &sigma,
                      const dealii::SymmetricTensor<2, dim> &tau,
