@@ -97,10 +97,13 @@ namespace hrcontact
   SymmetricTensor<2, dim>
   stress_at_strain(const MaterialLaw<dim>        &law,
                    const SymmetricTensor<2, dim> &eps,
-                   const Point<dim>              &x)
+                   const Point<dim>              &x,
+                   const SymmetricTensor<2, dim> *start)
   {
     SymmetricTensor<2, dim> s =
-      invert(compliance_tensor(law, SymmetricTensor<2, dim>(), x)) * eps;
+      start ?
+        *start :
+        invert(compliance_tensor(law, SymmetricTensor<2, dim>(), x)) * eps;
     double misfit = (law.strain(s, x) - eps).norm();
     for (unsigned int step = 0; step < 50; ++step)
       {
@@ -137,11 +140,13 @@ namespace hrcontact
   template SymmetricTensor<2, 2>
   stress_at_strain(const MaterialLaw<2> &,
                    const SymmetricTensor<2, 2> &,
-                   const Point<2> &);
+                   const Point<2> &,
+                   const SymmetricTensor<2, 2> *);
   template SymmetricTensor<2, 3>
   stress_at_strain(const MaterialLaw<3> &,
                    const SymmetricTensor<2, 3> &,
-                   const Point<3> &);
+                   const Point<3> &,
+                   const SymmetricTensor<2, 3> *);
 
   template class MaterialLawFactory<2>;
   template class MaterialLawFactory<3>;

@@ -125,7 +125,8 @@ namespace hrcontact
   /**
    * The stress whose strain is @p eps: the law inverted by Newton's method
    * on strain(sigma) = eps (the compliance its Jacobian, steps halved while
-   * they do not reduce the misfit), from the elastic stress. It maximises
+   * they do not reduce the misfit), from @p start (a stress near the answer)
+   * or else the elastic stress. It maximises
    * sigma : eps - phi^c(sigma), so phi^c's conjugate is W(eps) = sigma :
    * eps - phi^c(sigma) there. Throws NotConvergedError after 50 steps.
    */
@@ -133,7 +134,8 @@ namespace hrcontact
   dealii::SymmetricTensor<2, dim>
   stress_at_strain(const MaterialLaw<dim>                &law,
                    const dealii::SymmetricTensor<2, dim> &eps,
-                   const dealii::Point<dim>              &x);
+                   const dealii::Point<dim>              &x,
+                   const dealii::SymmetricTensor<2, dim> *start = nullptr);
 
   /**
    * The name -> factory registry of material laws and the Material/Model
