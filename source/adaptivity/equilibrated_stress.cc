@@ -22,11 +22,11 @@ namespace hrcontact
       "bound, Target error)";
     if (dim != 2)
       throw InputError(what + " is computed in 2D only so far.");
-    // Prescribed displacements and point supports are the kinds that are
-    // not normal; of the normal kinds, straight obstacles are covered
-    // (ContactTractions): the gap is linear along a straight face.
+    // u_h must meet every constraint pointwise where it meets it at the
+    // nodes (prescribed displacements, point supports, straight obstacles:
+    // ContactTractions carries their reactions).
     for (const auto &source : scene.constraints)
-      if (source->is_normal_kind() && source->entry() != "Contact/Obstacles")
+      if (!source->holds_pointwise_from_nodes())
         throw InputError(what + " does not cover " + source->entry() +
                          " yet (of the contact and normal kinds only "
                          "Contact/Obstacles: straight obstacles, along whose "
@@ -208,7 +208,7 @@ namespace hrcontact
                   // W(eps_h) - W(eps) - sigma : (eps_h - eps) = the Bregman
                   // distance of phi^c from W'(eps_h) to sigma.
                   const SymmetricTensor<2, dim> s_h =
-                    stress_at_strain(law, eps[q], points[q]);
+                    stress_at_strain(law, eps[q], points[q], &sigma_h[q]);
                   result.displacement_error_squared +=
                     w * bregman(sigma, s_h, points[q]);
                   result.reconstruction_error_squared +=

@@ -159,6 +159,19 @@ namespace hrcontact
     is_normal_kind() const;
 
     /**
+     * Whether Q1 displacements that meet its rows at the nodes meet them
+     * at every point of its faces (the error bound needs a kinematically
+     * admissible u_h): true for the kinds that are not normal, false
+     * unless a normal kind says so (a straight obstacle: the gap is linear
+     * along a straight face).
+     */
+    virtual bool
+    holds_pointwise_from_nodes() const
+    {
+      return !is_normal_kind();
+    }
+
+    /**
      * Called once with every face of every kind's boundaries before any
      * collect(): a kind whose rows couple nodes of several faces (contact
      * pairs) finds its partners here. Does nothing by default.

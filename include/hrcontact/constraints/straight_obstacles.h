@@ -27,6 +27,14 @@ namespace hrcontact
                        &earlier) override;
     std::string
     entry() const override;
+
+    /** The gap to the plane and the normal displacement are both linear
+     * along a straight face. */
+    bool
+    holds_pointwise_from_nodes() const override
+    {
+      return true;
+    }
     bool
     acts_on(const dealii::types::boundary_id id) const override;
     std::vector<dealii::types::boundary_id>
