@@ -163,19 +163,74 @@ namespace hrcontact
     Assert(r == A.m(), ExcInternalError());
   }
 
+  std::vector<long long>
+  CellEquilibration::shape_key(const TriangleSplit     &split,
+                               const types::material_id body) const
+  {
+    std::vector<long long> key{(long long)body, (long long)split.n_triangles()};
+    for (unsigned int k = 1; k < split.n_triangles(); ++k)
+      for (unsigned int d = 0; d < 2; ++d)
+        key.push_back(
+          std::llround((split.P[k][d] - split.P[0][d]) / split.h * 1e10));
+    return key;
+  }
+
+  void
+  CellEquilibration::tabulate(const TriangleSplit         &split,
+                              const std::vector<Point<2>> &points,
+                              Factors                     &F) const
+  {
+    const TrianglePolynomials &P = polynomials;
+    F.h                          = split.h;
+    F.values.reinit(points.size(), P.monomials.size());
+    F.lower_values.reinit(points.size(), lower.monomials.size());
+    for (unsigned int q = 0; q < points.size(); ++q)
+      {
+        for (unsigned int m = 0; m < P.monomials.size(); ++m)
+          F.values(q, m) = P.value(split, points[q], m);
+        for (unsigned int l = 0; l < lower.monomials.size(); ++l)
+          F.lower_values(q, l) = lower.value(split, points[q], l);
+      }
+  }
+
+  void
+  CellEquilibration::hessian(const Factors             &F,
+                             const types::material_id   body,
+                             const std::vector<double> &weights,
+                             const unsigned int         n_triangles,
+                             FullMatrix<double>        &H)
+  {
+    // Block diagonal, one block per triangle and pair of components: the
+    // monomials' mass matrix times the compliance.
+    const TrianglePolynomials &P   = polynomials;
+    const unsigned int         n_m = P.monomials.size();
+    const unsigned int         n_k = weights.size() / n_triangles;
+    const FullMatrix<double>  &S   = compliances(body).first;
+    H.reinit(P.n_unknowns(n_triangles), P.n_unknowns(n_triangles));
+    FullMatrix<double> mass(n_m, n_m);
+    for (unsigned int k = 0; k < n_triangles; ++k)
+      {
+        mass = 0;
+        for (unsigned int q = k * n_k; q < (k + 1) * n_k; ++q)
+          for (unsigned int m1 = 0; m1 < n_m; ++m1)
+            for (unsigned int m2 = 0; m2 < n_m; ++m2)
+              mass(m1, m2) += weights[q] * F.values(q, m1) * F.values(q, m2);
+        for (unsigned int c1 = 0; c1 < 3; ++c1)
+          for (unsigned int c2 = 0; c2 < 3; ++c2)
+            for (unsigned int m1 = 0; m1 < n_m; ++m1)
+              for (unsigned int m2 = 0; m2 < n_m; ++m2)
+                H(P.index(k, c1, m1), P.index(k, c2, m2)) =
+                  S(c1, c2) * mass(m1, m2);
+      }
+  }
+
   const CellEquilibration::Factors &
   CellEquilibration::factors(const TriangleSplit         &split,
                              const types::material_id     body,
                              const std::vector<Point<2>> &points,
                              const std::vector<double>   &weights)
   {
-    // The shape up to translation and scale (with its hanging nodes), and
-    // the body.
-    std::vector<long long> key{(long long)body, (long long)split.n_triangles()};
-    for (unsigned int k = 1; k < split.n_triangles(); ++k)
-      for (unsigned int d = 0; d < 2; ++d)
-        key.push_back(
-          std::llround((split.P[k][d] - split.P[0][d]) / split.h * 1e10));
+    const auto key = shape_key(split, body);
     if (const auto it = cache.find(key); it != cache.end())
       return it->second;
     // A mesh of distinct shapes (curved, graded) would keep one set per
@@ -189,33 +244,12 @@ namespace hrcontact
     const unsigned int         n_k    = points.size() / n_tri;
     const unsigned int         n_rows = this->n_rows(split);
     Factors                    F;
-    F.h = split.h;
     // The monomials at the rule's points: the same local coordinates on
     // every similar cell.
-    F.values.reinit(points.size(), P.monomials.size());
-    F.lower_values.reinit(points.size(), lower.monomials.size());
-    for (unsigned int q = 0; q < points.size(); ++q)
-      {
-        for (unsigned int m = 0; m < P.monomials.size(); ++m)
-          F.values(q, m) = P.value(split, points[q], m);
-        for (unsigned int l = 0; l < lower.monomials.size(); ++l)
-          F.lower_values(q, l) = lower.value(split, points[q], l);
-      }
-    FullMatrix<double> A;
+    tabulate(split, points, F);
+    FullMatrix<double> A, H;
     constraint_matrix(split, points, weights, A);
-    // The energy's Hessian H = sum_q w_q B_q^T S B_q.
-    const FullMatrix<double> &S = compliances(body).first;
-    FullMatrix<double>        H(n, n);
-    for (unsigned int q = 0; q < points.size(); ++q)
-      for (unsigned int m1 = 0; m1 < P.monomials.size(); ++m1)
-        for (unsigned int m2 = 0; m2 < P.monomials.size(); ++m2)
-          {
-            const double v = weights[q] * F.values(q, m1) * F.values(q, m2);
-            for (unsigned int c1 = 0; c1 < 3; ++c1)
-              for (unsigned int c2 = 0; c2 < 3; ++c2)
-                H(P.index(q / n_k, c1, m1), P.index(q / n_k, c2, m2)) +=
-                  v * S(c1, c2);
-          }
+    hessian(F, body, weights, n_tri, H);
     FullMatrix<double> pinv, N;
     pseudo_inverse_and_null_spaces(A, pinv, N, F.left_null);
     const unsigned int rank = n - N.n();
@@ -338,10 +372,22 @@ namespace hrcontact
     if (nonlinear)
       for (unsigned int q = 0; q < points.size(); ++q)
         target[q] = stress_at_strain(law, eps[q], points[q], &sigma_h[q]);
-    const Factors &F = factors(split, cell->material_id(), points, weights);
-
-    const unsigned int n_k = points.size() / split.n_triangles();
-    const unsigned int n_m = polynomials.monomials.size();
+    // A shape that repeats (every parallelogram, and a shape met before)
+    // keeps its factors; one met for the first time is solved directly.
+    const types::material_id body = cell->material_id();
+    if (!split.parallelogram() &&
+        cache.find(shape_key(split, body)) == cache.end())
+      {
+        if (seen.size() >= 100000)
+          seen.clear();
+        if (seen.insert(shape_key(split, body)).second)
+          {
+            solve_directly(cell, split, body, nonlinear, x);
+            finish(cell, law, direct, x, bound_squared, energy_squared);
+            return;
+          }
+      }
+    const Factors &F = factors(split, body, points, weights);
     constraint_data(cell, split, points, weights, F, c);
     x.reinit(polynomials.n_unknowns(split.n_triangles()));
     // The factors of a similar cell of size F.h: A scales as h, the
@@ -367,22 +413,7 @@ namespace hrcontact
       }
     else
       {
-        g.reinit(x.size());
-        const FullMatrix<double> &S = compliances(cell->material_id()).first;
-        for (unsigned int q = 0; q < points.size(); ++q)
-          {
-            double e[3] = {eps[q][0][0], eps[q][1][1], 2 * eps[q][0][1]};
-            if (nonlinear)
-              for (unsigned int cc = 0; cc < 3; ++cc)
-                e[cc] = S(cc, 0) * target[q][0][0] +
-                        S(cc, 1) * target[q][1][1] + S(cc, 2) * target[q][0][1];
-            for (unsigned int m = 0; m < n_m; ++m)
-              {
-                const double v = weights[q] * F.values(q, m);
-                for (unsigned int cc = 0; cc < 3; ++cc)
-                  g(polynomials.index(q / n_k, cc, m)) += v * e[cc];
-              }
-          }
+        energy_gradient(F, body, nonlinear, split.n_triangles(), g);
         F.M_g.vmult(xg, g);
         x.sadd(scale, scale * scale, xg);
       }
@@ -393,8 +424,70 @@ namespace hrcontact
     F.left_null.vmult(Ax, projection);
     if (sigma_max > 0)
       residual = std::max(residual, Ax.linfty_norm() / (sigma_max * split.h));
+    finish(cell, law, F, x, bound_squared, energy_squared);
+  }
 
-    if (nonlinear)
+  void
+  CellEquilibration::energy_gradient(const Factors           &F,
+                                     const types::material_id body,
+                                     const bool               nonlinear,
+                                     const unsigned int       n_triangles,
+                                     Vector<double>          &g) const
+  {
+    const unsigned int n_k = points.size() / n_triangles;
+    const unsigned int n_m = polynomials.monomials.size();
+    g.reinit(polynomials.n_unknowns(n_triangles));
+    const FullMatrix<double> &S = compliance.at(body).first;
+    for (unsigned int q = 0; q < points.size(); ++q)
+      {
+        double e[3] = {eps[q][0][0], eps[q][1][1], 2 * eps[q][0][1]};
+        if (nonlinear)
+          for (unsigned int cc = 0; cc < 3; ++cc)
+            e[cc] = S(cc, 0) * target[q][0][0] + S(cc, 1) * target[q][1][1] +
+                    S(cc, 2) * target[q][0][1];
+        for (unsigned int m = 0; m < n_m; ++m)
+          {
+            const double v = weights[q] * F.values(q, m);
+            for (unsigned int cc = 0; cc < 3; ++cc)
+              g(polynomials.index(q / n_k, cc, m)) += v * e[cc];
+          }
+      }
+  }
+
+  void
+  CellEquilibration::solve_directly(
+    const DoFHandler<2>::active_cell_iterator &cell,
+    const TriangleSplit                       &split,
+    const types::material_id                   body,
+    const bool                                 nonlinear,
+    Vector<double>                            &x)
+  {
+    const unsigned int n_tri = split.n_triangles();
+    tabulate(split, points, direct);
+    constraint_matrix(split, points, weights, A_direct);
+    hessian(direct, body, weights, n_tri, H_direct);
+    constraint_data(cell, split, points, weights, direct, c);
+    energy_gradient(direct, body, nonlinear, n_tri, g);
+    least_squares.factor(A_direct);
+    least_squares.solve(H_direct, g, c, x);
+    Ax.reinit(c.size());
+    A_direct.vmult(Ax, x);
+    Ax -= c;
+    if (sigma_max > 0)
+      residual = std::max(residual, Ax.linfty_norm() / (sigma_max * split.h));
+  }
+
+  void
+  CellEquilibration::finish(const DoFHandler<2>::active_cell_iterator &cell,
+                            const MaterialLaw<2>                      &law,
+                            const Factors                             &F,
+                            const Vector<double>                      &x,
+                            double &bound_squared,
+                            double &energy_squared)
+  {
+    const unsigned int n_k = points.size() / (x.size() / (3 * F.values.n()));
+    const unsigned int n_m = polynomials.monomials.size();
+    if (!law.is_linear())
       {
         fenchel_young(law, F, x, bound_squared, energy_squared);
         return;

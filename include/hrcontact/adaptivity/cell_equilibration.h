@@ -4,11 +4,13 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <hrcontact/adaptivity/constrained_least_squares.h>
 #include <hrcontact/adaptivity/face_tractions.h>
 #include <hrcontact/adaptivity/triangle_split.h>
 
 #include <array>
 #include <map>
+#include <set>
 #include <vector>
 
 namespace hrcontact
@@ -25,7 +27,10 @@ namespace hrcontact
    * The constraints and the energy depend on the cell's shape only: their
    * factors (SVD of the constraints, null space, reduced Hessian) are kept
    * per shape and body and reused, scaled, by every translated and scaled
-   * copy (the refinement levels of a locally refined mesh).
+   * copy (the refinement levels of a locally refined mesh). A shape met for
+   * the first time that is not a parallelogram (every cell of a curved
+   * mesh) is solved once, directly (ConstrainedLeastSquares), at a tenth
+   * of the flops; its factors are kept when it comes again.
    */
   class CellEquilibration
   {
@@ -68,6 +73,47 @@ namespace hrcontact
       dealii::FullMatrix<double>  M_g_G, fit;
       std::array<unsigned int, 3> fit_points{};
     };
+    /** The shape up to translation and scale (with its hanging nodes),
+     * and the body. */
+    std::vector<long long>
+    shape_key(const TriangleSplit       &split,
+              dealii::types::material_id body) const;
+    /** The monomials at the rule's points (F.values, F.lower_values). */
+    void
+    tabulate(const TriangleSplit                 &split,
+             const std::vector<dealii::Point<2>> &points,
+             Factors                             &F) const;
+    /** The energy's Hessian H = sum_q w_q B_q^T S B_q. */
+    void
+    hessian(const Factors                   &F,
+            const dealii::types::material_id body,
+            const std::vector<double>       &weights,
+            const unsigned int               n_triangles,
+            dealii::FullMatrix<double>      &H);
+    /** g = sum_q w_q B_q^T e_q, e the strain (or, for a nonlinear law, the
+     * S-strain of the target stress): the energy's linear term. */
+    void
+    energy_gradient(const Factors                   &F,
+                    const dealii::types::material_id body,
+                    const bool                       nonlinear,
+                    const unsigned int               n_triangles,
+                    dealii::Vector<double>          &g) const;
+    /** A shape met once: x from the constraints and the energy of this
+     * cell, and the residual |A x - c|. */
+    void
+    solve_directly(const dealii::DoFHandler<2>::active_cell_iterator &cell,
+                   const TriangleSplit                               &split,
+                   const dealii::types::material_id                   body,
+                   const bool                                         nonlinear,
+                   dealii::Vector<double>                            &x);
+    /** This cell's eta_K^2 and |sigma_h|^2 from the coefficients @p x. */
+    void
+    finish(const dealii::DoFHandler<2>::active_cell_iterator &cell,
+           const MaterialLaw<2>                              &law,
+           const Factors                                     &F,
+           const dealii::Vector<double>                      &x,
+           double                                            &bound_squared,
+           double                                            &energy_squared);
     const Factors &
     factors(const TriangleSplit                 &split,
             const dealii::types::material_id     body,
@@ -94,6 +140,12 @@ namespace hrcontact
     const TrianglePolynomials                 lower;
     CellSampler                               sampler;
     std::map<std::vector<long long>, Factors> cache;
+    /** Shapes met once (solved directly); a second meeting keeps factors. */
+    std::set<std::vector<long long>> seen;
+    /** The direct path's tables, matrices and factorisation. */
+    Factors                    direct;
+    dealii::FullMatrix<double> A_direct, H_direct;
+    ConstrainedLeastSquares    least_squares;
     std::map<dealii::types::material_id,
              std::pair<dealii::FullMatrix<double>, dealii::FullMatrix<double>>>
            compliance;

@@ -1,0 +1,166 @@
+#include <deal.II/base/exceptions.h>
+
+#include <hrcontact/adaptivity/constrained_least_squares.h>
+
+#include <algorithm>
+#include <cmath>
+
+// Reference LAPACK interfaces (column-major), linked through deal.II.
+extern "C"
+{
+  void
+  dgeqp3_(const int *m,
+          const int *n,
+          double    *a,
+          const int *lda,
+          int       *jpvt,
+          double    *tau,
+          double    *work,
+          const int *lwork,
+          int       *info);
+  void
+  dormqr_(const char   *side,
+          const char   *trans,
+          const int    *m,
+          const int    *n,
+          const int    *k,
+          const double *a,
+          const int    *lda,
+          const double *tau,
+          double       *c,
+          const int    *ldc,
+          double       *work,
+          const int    *lwork,
+          int          *info);
+  void
+  dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
+  void
+  dpotrs_(const char   *uplo,
+          const int    *n,
+          const int    *nrhs,
+          const double *a,
+          const int    *lda,
+          double       *b,
+          const int    *ldb,
+          int          *info);
+}
+
+namespace hrcontact
+{
+  using namespace dealii;
+
+  void
+  ConstrainedLeastSquares::factor(const FullMatrix<double> &A,
+                                  const double              tolerance)
+  {
+    m = A.m();
+    n = A.n();
+    // A is row-major, so its entries are A^T column-major (n x m).
+    qr.assign(&A(0, 0), &A(0, 0) + m * n);
+    pivots.assign(m, 0);
+    tau.resize(std::min(m, n));
+    int       info  = 0;
+    const int query = -1;
+    double    size  = 0;
+    dgeqp3_(
+      &n, &m, qr.data(), &n, pivots.data(), tau.data(), &size, &query, &info);
+    work.resize(std::max<std::size_t>(std::lround(size), 4 * n));
+    const int lwork = work.size();
+    dgeqp3_(&n,
+            &m,
+            qr.data(),
+            &n,
+            pivots.data(),
+            tau.data(),
+            work.data(),
+            &lwork,
+            &info);
+    AssertThrow(info == 0, ExcMessage("dgeqp3 failed"));
+    r                    = 0;
+    const double largest = std::abs(qr[0]);
+    while (r < std::min(m, n) && std::abs(qr[r + r * n]) > tolerance * largest)
+      ++r;
+  }
+
+  void
+  ConstrainedLeastSquares::apply_q(std::vector<double> &B, const int k)
+  {
+    int       info  = 0;
+    const int lwork = work.size();
+    const int n_ref = std::min(m, n);
+    dormqr_("L",
+            "N",
+            &n,
+            &k,
+            &n_ref,
+            qr.data(),
+            &n,
+            tau.data(),
+            B.data(),
+            &n,
+            work.data(),
+            &lwork,
+            &info);
+    AssertThrow(info == 0, ExcMessage("dormqr failed"));
+  }
+
+  void
+  ConstrainedLeastSquares::solve(const FullMatrix<double> &H,
+                                 const Vector<double>     &g,
+                                 const Vector<double>     &c,
+                                 Vector<double>           &x)
+  {
+    // R11^T w_1 = (Pi^T c)_1 by forward substitution (R is the upper
+    // triangle of qr); x_1 = Q (w_1, 0).
+    std::vector<double> w(n, 0.);
+    for (int i = 0; i < r; ++i)
+      {
+        double s = c(pivots[i] - 1);
+        for (int j = 0; j < i; ++j)
+          s -= qr[j + i * n] * w[j];
+        w[i] = s / qr[i + i * n];
+      }
+    apply_q(w, 1);
+    x.reinit(n);
+    std::copy(w.begin(), w.end(), x.begin());
+    const int k = n - r;
+    if (k == 0)
+      return;
+    // Q_2 = Q (0; I), the reduced Hessian K = Q_2^T H Q_2 and its
+    // right-hand side Q_2^T (g - H x_1).
+    Q2.assign(n * k, 0.);
+    for (int j = 0; j < k; ++j)
+      Q2[r + j + j * n] = 1;
+    apply_q(Q2, k);
+    HQ2.assign(n * k, 0.);
+    for (int j = 0; j < k; ++j)
+      for (int a = 0; a < n; ++a)
+        {
+          double s = 0;
+          for (int b = 0; b < n; ++b)
+            s += H(a, b) * Q2[b + j * n];
+          HQ2[a + j * n] = s;
+        }
+    K.assign(k * k, 0.);
+    std::vector<double> rhs(k, 0.);
+    for (int i = 0; i < k; ++i)
+      {
+        for (int j = 0; j < k; ++j)
+          for (int a = 0; a < n; ++a)
+            K[i + j * k] += Q2[a + i * n] * HQ2[a + j * n];
+        // Q_2^T g - (H Q_2)^T x_1 (H symmetric).
+        for (int a = 0; a < n; ++a)
+          rhs[i] += Q2[a + i * n] * g(a) - HQ2[a + i * n] * x(a);
+      }
+    int       info = 0;
+    const int one  = 1;
+    dpotrf_("L", &k, K.data(), &k, &info);
+    AssertThrow(info == 0,
+                ExcMessage("the energy is not positive definite on the "
+                           "admissible stresses' null space"));
+    dpotrs_("L", &k, &one, K.data(), &k, rhs.data(), &k, &info);
+    for (int j = 0; j < k; ++j)
+      for (int a = 0; a < n; ++a)
+        x(a) += Q2[a + j * n] * rhs[j];
+  }
+} // namespace hrcontact
