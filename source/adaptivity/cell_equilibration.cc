@@ -463,9 +463,19 @@ namespace hrcontact
     Vector<double>                            &x)
   {
     const unsigned int n_tri = split.n_triangles();
+    // The constraints and the energy are polynomials of degree p and 2p
+    // on each triangle: Duffy rules exact for them, not the bound's rule
+    // (which integrates the rational eps(u_h) of a general quadrilateral).
+    low_points.clear();
+    low_weights.clear();
+    split.rule(degree, low_points, low_weights);
+    constraint_matrix(split, low_points, low_weights, A_direct);
+    low_points.clear();
+    low_weights.clear();
+    split.rule(degree + 1, low_points, low_weights);
+    tabulate(split, low_points, low);
+    hessian(low, body, low_weights, n_tri, H_direct);
     tabulate(split, points, direct);
-    constraint_matrix(split, points, weights, A_direct);
-    hessian(direct, body, weights, n_tri, H_direct);
     constraint_data(cell, split, points, weights, direct, c);
     energy_gradient(direct, body, nonlinear, n_tri, g);
     least_squares.factor(A_direct);

@@ -169,6 +169,39 @@ namespace hrcontact
     for (unsigned int j = 0; j < fe_s.n_dofs_per_cell(); ++j)
       s_tensor.push_back(MixedSpaces<2>::stress_basis_tensor(
         fe_s.system_to_component_index(j).first));
+    // Vertex values, and whether they reproduce the elements inside.
+    const auto vertex_values = [](const FiniteElement<2>             &fe,
+                                  std::vector<std::array<double, 4>> &values) {
+      values.resize(fe.n_dofs_per_cell());
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        for (unsigned int v = 0; v < 4; ++v)
+          values[i][v] =
+            fe.shape_value(i, GeometryInfo<2>::unit_cell_vertex(v));
+    };
+    vertex_values(fe_u, u_vertex);
+    vertex_values(fe_s, s_vertex);
+    in_q1 = true;
+    for (const Point<2> p : {Point<2>(0.3, 0.7), Point<2>(0.81, 0.13)})
+      {
+        const double hat[4] = {(1 - p[0]) * (1 - p[1]),
+                               p[0] * (1 - p[1]),
+                               (1 - p[0]) * p[1],
+                               p[0] * p[1]};
+        for (unsigned int i = 0; i < fe_u.n_dofs_per_cell(); ++i)
+          {
+            double sum = 0;
+            for (unsigned int v = 0; v < 4; ++v)
+              sum += u_vertex[i][v] * hat[v];
+            in_q1 = in_q1 && std::abs(sum - fe_u.shape_value(i, p)) < 1e-12;
+          }
+        for (unsigned int j = 0; j < fe_s.n_dofs_per_cell(); ++j)
+          {
+            double sum = 0;
+            for (unsigned int v = 0; v < 4; ++v)
+              sum += s_vertex[j][v] * hat[v];
+            in_q1 = in_q1 && std::abs(sum - fe_s.shape_value(j, p)) < 1e-12;
+          }
+      }
   }
 
   void
@@ -179,7 +212,25 @@ namespace hrcontact
     t.u_grad.assign(n, std::vector<Tensor<1, 2>>(u_dofs.size()));
     t.hat_grad.assign(n, std::vector<Tensor<1, 2>>(4));
     t.s_value.assign(n, std::vector<double>(s_dofs.size()));
-    for (unsigned int q = 0; q < n; ++q)
+    for (unsigned int q = 0; q < n && in_q1; ++q)
+      {
+        const double x = t.unit[q][0], y = t.unit[q][1];
+        const double hat[4] = {(1 - x) * (1 - y),
+                               x * (1 - y),
+                               (1 - x) * y,
+                               x * y};
+        t.hat_grad[q]       = {Tensor<1, 2>({y - 1, x - 1}),
+                               Tensor<1, 2>({1 - y, -x}),
+                               Tensor<1, 2>({-y, 1 - x}),
+                               Tensor<1, 2>({y, x})};
+        for (unsigned int i = 0; i < u_dofs.size(); ++i)
+          for (unsigned int v = 0; v < 4; ++v)
+            t.u_grad[q][i] += u_vertex[i][v] * t.hat_grad[q][v];
+        for (unsigned int j = 0; j < s_dofs.size(); ++j)
+          for (unsigned int v = 0; v < 4; ++v)
+            t.s_value[q][j] += s_vertex[j][v] * hat[v];
+      }
+    for (unsigned int q = 0; q < n && !in_q1; ++q)
       {
         for (unsigned int i = 0; i < u_dofs.size(); ++i)
           t.u_grad[q][i] = fe_u.shape_grad(i, t.unit[q]);
@@ -228,10 +279,16 @@ namespace hrcontact
       }
     else
       {
-        own.unit.clear();
-        for (const Point<2> &x : points)
-          own.unit.push_back(
-            StaticMappingQ1<2>::mapping.transform_real_to_unit_cell(cell, x));
+        own.unit.resize(points.size());
+        StaticMappingQ1<2>::mapping.transform_points_real_to_unit_cell(
+          cell, points, own.unit);
+        // A point the batch did not map (marked infinite): the single
+        // point transform, which throws a named error if it fails too.
+        for (unsigned int q = 0; q < points.size(); ++q)
+          if (!std::isfinite(own.unit[q][0]))
+            own.unit[q] =
+              StaticMappingQ1<2>::mapping.transform_real_to_unit_cell(
+                cell, points[q]);
         tabulate(own);
       }
     // The cell's values once (global lookups cost), then per point the

@@ -143,9 +143,11 @@ namespace hrcontact
     /** Shapes met once (solved directly); a second meeting keeps factors. */
     std::set<std::vector<long long>> seen;
     /** The direct path's tables, matrices and factorisation. */
-    Factors                    direct;
-    dealii::FullMatrix<double> A_direct, H_direct;
-    ConstrainedLeastSquares    least_squares;
+    Factors                       direct, low;
+    std::vector<dealii::Point<2>> low_points;
+    std::vector<double>           low_weights;
+    dealii::FullMatrix<double>    A_direct, H_direct;
+    ConstrainedLeastSquares       least_squares;
     std::map<dealii::types::material_id,
              std::pair<dealii::FullMatrix<double>, dealii::FullMatrix<double>>>
            compliance;

@@ -115,8 +115,9 @@ namespace hrcontact
    * affine map takes a rule on the triangles to the same unit points on
    * every cell, so the shape functions there are tabulated once per rule;
    * other cells find their unit points by the Q1 mapping's Newton
-   * iteration. (FEValues, set up per cell for its own points, would cost
-   * more than the rest of the bound.)
+   * iteration (deal.II's batched transform_points_real_to_unit_cell).
+   * (FEValues, set up per cell for its own points, would cost more than the
+   * rest of the bound.)
    */
   class CellSampler
   {
@@ -139,6 +140,13 @@ namespace hrcontact
     };
     void
     tabulate(Table &t) const;
+    /** Whether every shape function of both elements lies in Q1 on the
+     * unit cell (Q1 displacements; DGQ1 and Pian-Sumihara stresses): then
+     * each is its vertex values times the bilinear hats, evaluated in
+     * closed form rather than through the elements' polynomial classes. */
+    bool in_q1 = false;
+    /** The shape functions' values at the four unit vertices. */
+    std::vector<std::array<double, 4>> u_vertex, s_vertex;
 
     const Results<2>                            &results;
     const dealii::FiniteElement<2>              &fe_u, &fe_s;
