@@ -83,11 +83,13 @@ namespace hrcontact
   }
 
   void
-  ConstrainedLeastSquares::apply_q(std::vector<double> &B, const int k)
+  ConstrainedLeastSquares::apply_q(std::vector<double> &B, const int k) const
   {
     int       info  = 0;
-    const int lwork = work.size();
     const int n_ref = std::min(m, n);
+    if (work.size() < 64u * k)
+      work.resize(64u * k);
+    const int lwork = work.size();
     dormqr_("L",
             "N",
             &n,
@@ -110,6 +112,47 @@ namespace hrcontact
                                  const Vector<double>     &c,
                                  Vector<double>           &x)
   {
+    prepare(H);
+    solve(g, c, x);
+  }
+
+  void
+  ConstrainedLeastSquares::prepare(const FullMatrix<double> &H)
+  {
+    // Q_2 = Q (0; I), H Q_2 and the reduced Hessian K = Q_2^T H Q_2.
+    const int k = n - r;
+    Q2.assign(n * k, 0.);
+    HQ2.assign(n * k, 0.);
+    K.assign(k * k, 0.);
+    if (k == 0)
+      return;
+    for (int j = 0; j < k; ++j)
+      Q2[r + j + j * n] = 1;
+    apply_q(Q2, k);
+    for (int j = 0; j < k; ++j)
+      for (int a = 0; a < n; ++a)
+        {
+          double s = 0;
+          for (int b = 0; b < n; ++b)
+            s += H(a, b) * Q2[b + j * n];
+          HQ2[a + j * n] = s;
+        }
+    for (int i = 0; i < k; ++i)
+      for (int j = 0; j < k; ++j)
+        for (int a = 0; a < n; ++a)
+          K[i + j * k] += Q2[a + i * n] * HQ2[a + j * n];
+    int info = 0;
+    dpotrf_("L", &k, K.data(), &k, &info);
+    AssertThrow(info == 0,
+                ExcMessage("the energy is not positive definite on the "
+                           "admissible stresses' null space"));
+  }
+
+  void
+  ConstrainedLeastSquares::solve(const Vector<double> &g,
+                                 const Vector<double> &c,
+                                 Vector<double>       &x) const
+  {
     // R11^T w_1 = (Pi^T c)_1 by forward substitution (R is the upper
     // triangle of qr); x_1 = Q (w_1, 0).
     std::vector<double> w(n, 0.);
@@ -126,41 +169,16 @@ namespace hrcontact
     const int k = n - r;
     if (k == 0)
       return;
-    // Q_2 = Q (0; I), the reduced Hessian K = Q_2^T H Q_2 and its
-    // right-hand side Q_2^T (g - H x_1).
-    Q2.assign(n * k, 0.);
-    for (int j = 0; j < k; ++j)
-      Q2[r + j + j * n] = 1;
-    apply_q(Q2, k);
-    HQ2.assign(n * k, 0.);
-    for (int j = 0; j < k; ++j)
-      for (int a = 0; a < n; ++a)
-        {
-          double s = 0;
-          for (int b = 0; b < n; ++b)
-            s += H(a, b) * Q2[b + j * n];
-          HQ2[a + j * n] = s;
-        }
-    K.assign(k * k, 0.);
-    std::vector<double> rhs(k, 0.);
+    // The null space's part: K z = Q_2^T g - (H Q_2)^T x_1 (H symmetric).
+    std::vector<double> z(k, 0.);
     for (int i = 0; i < k; ++i)
-      {
-        for (int j = 0; j < k; ++j)
-          for (int a = 0; a < n; ++a)
-            K[i + j * k] += Q2[a + i * n] * HQ2[a + j * n];
-        // Q_2^T g - (H Q_2)^T x_1 (H symmetric).
-        for (int a = 0; a < n; ++a)
-          rhs[i] += Q2[a + i * n] * g(a) - HQ2[a + i * n] * x(a);
-      }
+      for (int a = 0; a < n; ++a)
+        z[i] += Q2[a + i * n] * g(a) - HQ2[a + i * n] * x(a);
     int       info = 0;
     const int one  = 1;
-    dpotrf_("L", &k, K.data(), &k, &info);
-    AssertThrow(info == 0,
-                ExcMessage("the energy is not positive definite on the "
-                           "admissible stresses' null space"));
-    dpotrs_("L", &k, &one, K.data(), &k, rhs.data(), &k, &info);
+    dpotrs_("L", &k, &one, K.data(), &k, z.data(), &k, &info);
     for (int j = 0; j < k; ++j)
       for (int a = 0; a < n; ++a)
-        x(a) += Q2[a + j * n] * rhs[j];
+        x(a) += Q2[a + j * n] * z[j];
   }
 } // namespace hrcontact

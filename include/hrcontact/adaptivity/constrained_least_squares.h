@@ -35,6 +35,16 @@ namespace hrcontact
           const dealii::Vector<double>     &c,
           dealii::Vector<double>           &x);
 
+    /** The energy's share that does not depend on g and c, for many
+     * solves with one H (a shape that repeats). */
+    void
+    prepare(const dealii::FullMatrix<double> &H);
+    /** The minimiser for the H of prepare(). */
+    void
+    solve(const dealii::Vector<double> &g,
+          const dealii::Vector<double> &c,
+          dealii::Vector<double>       &x) const;
+
     unsigned int
     rank() const
     {
@@ -42,14 +52,15 @@ namespace hrcontact
     }
 
   private:
-    int                 m = 0, n = 0, r = 0;
-    std::vector<double> qr, tau, work;
-    std::vector<int>    pivots;
+    int                         m = 0, n = 0, r = 0;
+    std::vector<double>         qr, tau;
+    mutable std::vector<double> work;
+    std::vector<int>            pivots;
     /** Q_2 (n x (n - r), column-major), H Q_2 and the reduced Hessian. */
     std::vector<double> Q2, HQ2, K;
     /** Q applied to the n x k column-major block B. */
     void
-    apply_q(std::vector<double> &B, const int k);
+    apply_q(std::vector<double> &B, const int k) const;
   };
 } // namespace hrcontact
 
