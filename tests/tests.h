@@ -455,12 +455,13 @@ namespace hrcontact_tests
 
   /** Runs @p text (solve and results) where an InputError is due: prints
    * "WHAT: refused: <its message>" or "WHAT: NOT refused". */
-  inline void
+  template <int dim = 2>
+  void
   print_input_refusal(const std::string &what, const std::string &text)
   {
     try
       {
-        const auto         problem = solve_from_text<2>(text);
+        const auto         problem = solve_from_text<dim>(text);
         std::ostringstream quiet;
         problem->output_results(quiet);
         std::cout << what << ": NOT refused" << std::endl;

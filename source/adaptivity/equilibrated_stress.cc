@@ -3,6 +3,7 @@
 #include <hrcontact/adaptivity/cell_equilibration.h>
 #include <hrcontact/adaptivity/equilibrated_stress.h>
 #include <hrcontact/adaptivity/face_tractions.h>
+#include <hrcontact/adaptivity/hexahedron_bound.h>
 #include <hrcontact/adaptivity/triangle_split.h>
 #include <hrcontact/core/input.h>
 #include <hrcontact/postprocess/field_values.h>
@@ -20,8 +21,11 @@ namespace hrcontact
     const std::string what =
       "The error bound (Postprocess/Error bound, Mesh refinement/Estimator = "
       "bound, Target error)";
-    if (dim != 2)
-      throw InputError(what + " is computed in 2D only so far.");
+    if (dim == 3)
+      for (unsigned int body = 0; body < std::max(1u, scene.n_bodies); ++body)
+        if (!scene.material_of(body).is_linear())
+          throw InputError(what + " covers linear elastic bodies only in 3D "
+                                  "so far.");
     // u_h must meet every constraint pointwise where it meets it at the
     // nodes (prescribed displacements, point supports, straight obstacles:
     // ContactTractions carries their reactions).
@@ -55,6 +59,10 @@ namespace hrcontact
     if (const std::string why = ContactTractions::not_covered(results.system);
         !why.empty())
       throw InputError(what + " covers " + why + ".");
+    if constexpr (dim == 3)
+      if (const std::string why = HexahedronBound::not_covered(results);
+          !why.empty())
+        throw InputError(what + " covers " + why + ".");
     for (const auto &row : results.system.rows)
       if (row.row_class == RowClass::prescribed && single_dof(row) < 0)
         throw InputError(what + " covers prescribed displacement components "
@@ -105,6 +113,17 @@ namespace hrcontact
         cell_residual       = Utilities::MPI::max(cells.residual, comm);
         solution_energy     = Utilities::MPI::sum(solution_energy, comm);
         add_contact_terms(faces);
+      }
+    else
+      {
+        coefficients.assign(results.triangulation().n_active_cells(),
+                            Vector<double>());
+        bound_squared.assign(coefficients.size(), 0.);
+        HexahedronBound(results).compute(coefficients,
+                                         bound_squared,
+                                         solution_energy,
+                                         traction_residual,
+                                         cell_residual);
       }
   }
 
@@ -219,6 +238,15 @@ namespace hrcontact
                     w * 2 * law.complementary_energy(sigma, points[q]);
                 }
             }
+      }
+    else
+      {
+        const auto sums =
+          HexahedronBound(results).compare(coefficients, reference);
+        result.displacement_error_squared   = sums[0];
+        result.reconstruction_error_squared = sums[1];
+        result.stress_error_squared         = sums[2];
+        result.reference_energy_squared     = sums[3];
       }
     const MPI_Comm comm = results.partition.communicator;
     for (double *v : {&result.displacement_error_squared,

@@ -2,6 +2,8 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <hrcontact/adaptivity/hexahedron_equilibration.h>
+#include <hrcontact/discretisation/mixed_spaces.h>
+#include <hrcontact/material/material_law.h>
 
 #include <algorithm>
 #include <cmath>
@@ -69,6 +71,51 @@ namespace hrcontact
         }
     }
   } // namespace
+
+  FullMatrix<double>
+  component_compliance(const MaterialLaw<3> &law)
+  {
+    FullMatrix<double> S(6, 6);
+    for (unsigned int a = 0; a < 6; ++a)
+      {
+        const auto e =
+          law.strain(MixedSpaces<3>::stress_basis_tensor(a), Point<3>());
+        for (unsigned int b = 0; b < 6; ++b)
+          S(b, a) = MixedSpaces<3>::stress_basis_tensor(b) * e;
+      }
+    return S;
+  }
+
+  void
+  HexahedronEquilibration::tetrahedron_rule(const unsigned int     k,
+                                            std::vector<Point<3>> &points,
+                                            std::vector<double> &weights) const
+  {
+    std::array<Point<3>, 4> corners;
+    for (unsigned int i = 0; i < 4; ++i)
+      corners[i] = geometry.P[tets[k][i]];
+    simplex_rule<3>(corners, 3, points, weights);
+  }
+
+  void
+  HexahedronEquilibration::set_cell(const std::array<Point<3>, 8> &vertices)
+  {
+    Geometry &G = geometry;
+    G.P[14]     = Point<3>();
+    for (unsigned int v = 0; v < 8; ++v)
+      {
+        G.P[v] = vertices[v];
+        G.P[14] += vertices[v] / 8.;
+      }
+    for (unsigned int f = 0; f < 6; ++f)
+      {
+        G.P[8 + f] = Point<3>();
+        for (unsigned int j = 0; j < 4; ++j)
+          G.P[8 + f] +=
+            vertices[GeometryInfo<3>::face_to_cell_vertices(f, j)] / 4.;
+      }
+    G.h = vertices[0].distance(vertices[7]);
+  }
 
   HexahedronEquilibration::HexahedronEquilibration(const FullMatrix<double> &S)
     : S(S)
@@ -348,21 +395,8 @@ namespace hrcontact
                                  const StressField             &target,
                                  Vector<double>                &x)
   {
-    Geometry &G = geometry;
-    G.P[14]     = Point<3>();
-    for (unsigned int v = 0; v < 8; ++v)
-      {
-        G.P[v] = vertices[v];
-        G.P[14] += vertices[v] / 8.;
-      }
-    for (unsigned int f = 0; f < 6; ++f)
-      {
-        G.P[8 + f] = Point<3>();
-        for (unsigned int j = 0; j < 4; ++j)
-          G.P[8 + f] +=
-            vertices[GeometryInfo<3>::face_to_cell_vertices(f, j)] / 4.;
-      }
-    G.h = vertices[0].distance(vertices[7]);
+    set_cell(vertices);
+    const Geometry &G = geometry;
     // The shape up to translation and scale.
     std::vector<long long> key;
     for (unsigned int v = 1; v < 8; ++v)

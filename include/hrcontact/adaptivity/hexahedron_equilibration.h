@@ -17,6 +17,14 @@
 
 namespace hrcontact
 {
+  template <int dim>
+  class MaterialLaw;
+
+  /** A law's compliance on the stress components (xx, yy, zz, xy, xz, yz),
+   * engineering shear strains: e = S s. */
+  dealii::FullMatrix<double>
+  component_compliance(const MaterialLaw<3> &law);
+
   /**
    * The 3D cell problem of the error bound (step 2 of EquilibratedStress
    * on a hexahedron): the cell split into 24 tetrahedra (its centre, the
@@ -64,6 +72,15 @@ namespace hrcontact
           const VectorField                     &body_force,
           const StressField                     &target,
           dealii::Vector<double>                &x);
+
+    /** Sets the cell (solve() does it too). */
+    void
+    set_cell(const std::array<dealii::Point<3>, 8> &vertices);
+    /** The rule of tetrahedron @p k of the cell (exact to degree 5). */
+    void
+    tetrahedron_rule(const unsigned int             k,
+                     std::vector<dealii::Point<3>> &points,
+                     std::vector<double>           &weights) const;
 
     /** tau of coefficients @p x on tetrahedron @p k of the last solved
      * cell at @p point. */
