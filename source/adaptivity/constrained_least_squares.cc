@@ -35,6 +35,63 @@ extern "C"
   void
   dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
   void
+  dgemm_(const char   *transa,
+         const char   *transb,
+         const int    *m,
+         const int    *n,
+         const int    *k,
+         const double *alpha,
+         const double *a,
+         const int    *lda,
+         const double *b,
+         const int    *ldb,
+         const double *beta,
+         double       *c,
+         const int    *ldc);
+  void
+  dorgqr_(const int    *m,
+          const int    *n,
+          const int    *k,
+          double       *a,
+          const int    *lda,
+          const double *tau,
+          double       *work,
+          const int    *lwork,
+          int          *info);
+  void
+  dtrsm_(const char   *side,
+         const char   *uplo,
+         const char   *transa,
+         const char   *diag,
+         const int    *m,
+         const int    *n,
+         const double *alpha,
+         const double *a,
+         const int    *lda,
+         double       *b,
+         const int    *ldb);
+  void
+  dtrsv_(const char   *uplo,
+         const char   *trans,
+         const char   *diag,
+         const int    *n,
+         const double *a,
+         const int    *lda,
+         double       *x,
+         const int    *incx);
+  void
+  dgemv_(const char   *trans,
+         const int    *m,
+         const int    *n,
+         const double *alpha,
+         const double *a,
+         const int    *lda,
+         const double *x,
+         const int    *incx,
+         const double *beta,
+         double       *y,
+         const int    *incy);
+  void
   dpotrs_(const char   *uplo,
           const int    *n,
           const int    *nrhs,
@@ -117,6 +174,26 @@ namespace hrcontact
   }
 
   void
+  ConstrainedLeastSquares::make_explicit()
+  {
+    if (!X.empty() || r == 0)
+      return;
+    // Q_1: the first r columns of Q, which only the first r reflectors
+    // touch; then X = Q_1 R_11^-T.
+    X.assign(qr.begin(), qr.begin() + n * r);
+    int    info = 0, lwork = -1;
+    double size = 0;
+    dorgqr_(&n, &r, &r, X.data(), &n, tau.data(), &size, &lwork, &info);
+    std::vector<double> scratch(std::max<std::size_t>(std::lround(size), n));
+    lwork = scratch.size();
+    dorgqr_(
+      &n, &r, &r, X.data(), &n, tau.data(), scratch.data(), &lwork, &info);
+    AssertThrow(info == 0, ExcMessage("dorgqr failed"));
+    const double plus = 1;
+    dtrsm_("R", "U", "T", "N", &n, &r, &plus, qr.data(), &n, X.data(), &n);
+  }
+
+  void
   ConstrainedLeastSquares::prepare(const FullMatrix<double> &H)
   {
     // Q_2 = Q (0; I), H Q_2 and the reduced Hessian K = Q_2^T H Q_2.
@@ -129,18 +206,34 @@ namespace hrcontact
     for (int j = 0; j < k; ++j)
       Q2[r + j + j * n] = 1;
     apply_q(Q2, k);
-    for (int j = 0; j < k; ++j)
-      for (int a = 0; a < n; ++a)
-        {
-          double s = 0;
-          for (int b = 0; b < n; ++b)
-            s += H(a, b) * Q2[b + j * n];
-          HQ2[a + j * n] = s;
-        }
-    for (int i = 0; i < k; ++i)
-      for (int j = 0; j < k; ++j)
-        for (int a = 0; a < n; ++a)
-          K[i + j * k] += Q2[a + i * n] * HQ2[a + j * n];
+    // H is symmetric: its row-major entries are H column-major.
+    const double plus = 1, zero = 0;
+    dgemm_("N",
+           "N",
+           &n,
+           &k,
+           &n,
+           &plus,
+           &H(0, 0),
+           &n,
+           Q2.data(),
+           &n,
+           &zero,
+           HQ2.data(),
+           &n);
+    dgemm_("T",
+           "N",
+           &k,
+           &k,
+           &n,
+           &plus,
+           Q2.data(),
+           &n,
+           HQ2.data(),
+           &n,
+           &zero,
+           K.data(),
+           &k);
     int info = 0;
     dpotrf_("L", &k, K.data(), &k, &info);
     AssertThrow(info == 0,
@@ -157,28 +250,68 @@ namespace hrcontact
     // triangle of qr); x_1 = Q (w_1, 0).
     std::vector<double> w(n, 0.);
     for (int i = 0; i < r; ++i)
-      {
-        double s = c(pivots[i] - 1);
-        for (int j = 0; j < i; ++j)
-          s -= qr[j + i * n] * w[j];
-        w[i] = s / qr[i + i * n];
-      }
-    apply_q(w, 1);
+      w[i] = c(pivots[i] - 1);
+    const int    one  = 1;
+    const double plus = 1, minus = -1, zero = 0;
     x.reinit(n);
-    std::copy(w.begin(), w.end(), x.begin());
+    if (!X.empty())
+      dgemv_("N",
+             &n,
+             &r,
+             &plus,
+             X.data(),
+             &n,
+             w.data(),
+             &one,
+             &zero,
+             x.begin(),
+             &one);
+    else
+      {
+        if (r > 0)
+          dtrsv_("U", "T", "N", &r, qr.data(), &n, w.data(), &one);
+        apply_q(w, 1);
+        std::copy(w.begin(), w.end(), x.begin());
+      }
     const int k = n - r;
     if (k == 0)
       return;
     // The null space's part: K z = Q_2^T g - (H Q_2)^T x_1 (H symmetric).
     std::vector<double> z(k, 0.);
-    for (int i = 0; i < k; ++i)
-      for (int a = 0; a < n; ++a)
-        z[i] += Q2[a + i * n] * g(a) - HQ2[a + i * n] * x(a);
-    int       info = 0;
-    const int one  = 1;
+    dgemv_("T",
+           &n,
+           &k,
+           &plus,
+           Q2.data(),
+           &n,
+           g.begin(),
+           &one,
+           &zero,
+           z.data(),
+           &one);
+    dgemv_("T",
+           &n,
+           &k,
+           &minus,
+           HQ2.data(),
+           &n,
+           x.begin(),
+           &one,
+           &plus,
+           z.data(),
+           &one);
+    int info = 0;
     dpotrs_("L", &k, &one, K.data(), &k, z.data(), &k, &info);
-    for (int j = 0; j < k; ++j)
-      for (int a = 0; a < n; ++a)
-        x(a) += Q2[a + j * n] * z[j];
+    dgemv_("N",
+           &n,
+           &k,
+           &plus,
+           Q2.data(),
+           &n,
+           z.data(),
+           &one,
+           &plus,
+           x.begin(),
+           &one);
   }
 } // namespace hrcontact

@@ -107,6 +107,8 @@ namespace hrcontact
       dealii::FullMatrix<double> A;
       ConstrainedLeastSquares    least_squares;
       double                     h = 1;
+      /** Cells solved with these factors. */
+      unsigned int uses = 0;
     };
     /** Tetrahedron k: (centre, face centre, two vertices of an edge of the
      * face); its face without the centre is on the cell's boundary. */
