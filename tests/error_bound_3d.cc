@@ -11,7 +11,8 @@
 // - On 2 processes (a p4est mesh): the bound, true error and effectivity
 //   as serially to 1e-9.
 // - What the 3D bound does not cover yet (cells that are not
-//   parallelepipeds) is refused by name.
+//   parallelepipeds; bound-driven cycles, which make hanging nodes) is
+//   refused by name.
 
 #include <deal.II/base/mpi.h>
 
@@ -21,6 +22,7 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <hrcontact/adaptivity/adaptive_run.h>
 #include <hrcontact/adaptivity/equilibrated_stress.h>
 #include <hrcontact/core/input.h>
 
@@ -173,5 +175,31 @@ main(int argc, char **argv)
     std::cout.rdbuf(old);
     if (rank == 0)
       std::cout << out.str();
+  }
+  // Bound-driven cycles would make hanging nodes: refused before a solve.
+  {
+    dealii::ParameterHandler prm;
+    hrcontact::declare_all_parameters(prm);
+    prm.parse_input_from_string(
+      cube(1, "results") +
+      "subsection Mesh refinement\n  set Estimator = bound\n"
+      "  set Adaptive cycles = 2\nend\n");
+    std::ostringstream log;
+    try
+      {
+        hrcontact::run_adaptive_cycles<3>(prm, log, MPI_COMM_WORLD);
+        if (rank == 0)
+          std::cout << "bound-driven cycles in 3D: NOT refused" << std::endl;
+      }
+    catch (const hrcontact::InputError &e)
+      {
+        if (rank == 0)
+          std::cout << "bound-driven cycles in 3D: refused before a solve: "
+                    << (log.str().find("adaptive cycle 0") ==
+                            std::string::npos ?
+                          "yes" :
+                          "NO")
+                    << ": " << e.what() << std::endl;
+      }
   }
 }

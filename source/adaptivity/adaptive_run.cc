@@ -64,6 +64,17 @@ namespace hrcontact
             estimator->check(problem.results().scene);
             if (refinement.target_error > 0)
               EquilibratedStress<dim>::check_scene(problem.results().scene);
+            // The 3D bound needs conforming meshes; the cycles' refinement
+            // makes hanging nodes.
+            if (dim == 3 && refinement.n_cycles > 0 &&
+                (refinement.estimator == "bound" ||
+                 refinement.target_error > 0))
+              throw InputError(
+                "Mesh refinement: the error bound (Estimator = bound, "
+                "Target error) covers conforming meshes only in 3D so far, "
+                "and adaptive cycles make hanging nodes; refine uniformly "
+                "(Geometry/Global refinements) and use Postprocess/Error "
+                "bound.");
           }
         problem.refine_adaptively(refinement,
                                   refinement.carry_state ? previous.get() :
