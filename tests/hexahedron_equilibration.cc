@@ -3,7 +3,8 @@
 // stretched parallelepiped,
 // - random bilinear tractions on the six faces with a linear body force
 //   that balances them in force and moment must be met exactly (the split
-//   is what makes an admissible field exist): |A x - c| / |c| <= 1e-11;
+//   is what makes an admissible field exist): A x - c <= 1e-11 (data of
+//   order one);
 // - the tractions and body force of a random quadratic stress field must
 //   give that field back (the bound against it 0 to round-off);
 // - a translated and scaled copy reuses the factors and gives the scaled

@@ -194,7 +194,9 @@ namespace hrcontact
                            double                      &cell_residual) const
   {
     const HexahedronFaceTractions faces(results);
-    traction_residual = faces.residual;
+    // The largest stress dof over every process.
+    const double sigma_max = results.stress.linfty_norm();
+    traction_residual      = faces.residual;
     cell_residual = solution_energy = 0;
     std::map<types::material_id, std::unique_ptr<HexahedronEquilibration>>
                           cells;
@@ -248,7 +250,12 @@ namespace hrcontact
                         HexahedronEquilibration::VectorField(),
                       target,
                       coefficients[index]);
-          cell_residual = std::max(cell_residual, eq->residual);
+          // Relative to the largest stress times the cell's face area, as
+          // in 2D (the largest stress times its edge length).
+          const double h = cell->diameter();
+          cell_residual =
+            std::max(cell_residual,
+                     eq->residual / std::max(sigma_max * h * h, 1e-300));
           for (unsigned int k = 0; k < HexahedronEquilibration::n_tetrahedra;
                ++k)
             {

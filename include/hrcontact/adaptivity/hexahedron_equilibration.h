@@ -89,7 +89,8 @@ namespace hrcontact
            const unsigned int            k,
            const dealii::Point<3>       &point) const;
 
-    /** The largest |A x - c| of the last solve, relative to |c|. */
+    /** The largest entry of A x - c of the last solve, in the rows' units
+     * (a stress times an area): what of the data no admissible field met. */
     double residual = 0;
     /** Rank and size of the constraints of the last shape factored. */
     unsigned int rank = 0, n_rows = 0, n_unknowns = 0;
