@@ -473,7 +473,7 @@ namespace hrcontact
     // The explicit map loses digits where R_11 is ill conditioned: one
     // step of refinement (the minimiser is linear in the data) brings the
     // constraints back to round-off.
-    if (relative > 1e-13)
+    if (relative > 1e-11)
       {
         Vector<double> zero_g(x.size()), correction;
         r *= -1.;
