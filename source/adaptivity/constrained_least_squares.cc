@@ -174,6 +174,91 @@ namespace hrcontact
   }
 
   void
+  ConstrainedLeastSquares::solve_many(const std::vector<double> &G,
+                                      const std::vector<double> &C,
+                                      const int                  k,
+                                      std::vector<double>       &X_out) const
+  {
+    X_out.assign(n * k, 0.);
+    if (X.empty())
+      {
+        Vector<double> g(n), c(m), x;
+        for (int j = 0; j < k; ++j)
+          {
+            std::copy(G.begin() + j * n, G.begin() + (j + 1) * n, g.begin());
+            std::copy(C.begin() + j * m, C.begin() + (j + 1) * m, c.begin());
+            solve(g, c, x);
+            std::copy(x.begin(), x.end(), X_out.begin() + j * n);
+          }
+        return;
+      }
+    // X_1 = X (Pi^T C)_r, then the null space's part for every column.
+    std::vector<double> W(r * k);
+    for (int j = 0; j < k; ++j)
+      for (int i = 0; i < r; ++i)
+        W[i + j * r] = C[pivots[i] - 1 + j * m];
+    const double plus = 1, minus = -1, zero = 0;
+    dgemm_("N",
+           "N",
+           &n,
+           &k,
+           &r,
+           &plus,
+           X.data(),
+           &n,
+           W.data(),
+           &r,
+           &zero,
+           X_out.data(),
+           &n);
+    const int n_null = n - r;
+    if (n_null == 0)
+      return;
+    std::vector<double> Z(n_null * k);
+    dgemm_("T",
+           "N",
+           &n_null,
+           &k,
+           &n,
+           &plus,
+           Q2.data(),
+           &n,
+           G.data(),
+           &n,
+           &zero,
+           Z.data(),
+           &n_null);
+    dgemm_("T",
+           "N",
+           &n_null,
+           &k,
+           &n,
+           &minus,
+           HQ2.data(),
+           &n,
+           X_out.data(),
+           &n,
+           &plus,
+           Z.data(),
+           &n_null);
+    int info = 0;
+    dpotrs_("L", &n_null, &k, K.data(), &n_null, Z.data(), &n_null, &info);
+    dgemm_("N",
+           "N",
+           &n,
+           &k,
+           &n_null,
+           &plus,
+           Q2.data(),
+           &n,
+           Z.data(),
+           &n_null,
+           &plus,
+           X_out.data(),
+           &n);
+  }
+
+  void
   ConstrainedLeastSquares::make_explicit()
   {
     if (!X.empty() || r == 0)

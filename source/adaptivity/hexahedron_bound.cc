@@ -140,14 +140,14 @@ namespace hrcontact
   SymmetricTensor<2, 3>
   HexahedronBound::CellFields::stress(const Point<3> &x) const
   {
-    const Tensor<1, 3> xi = J_inv * (x - v0);
-    Vector<double>     c(6);
+    const Tensor<1, 3>    xi = J_inv * (x - v0);
+    SymmetricTensor<2, 3> sigma;
     for (unsigned int v = 0; v < 8; ++v)
       {
         Tensor<1, 3> g;
-        c.add(hat(v, xi, g), s[v]);
+        sigma += hat(v, xi, g) * s[v];
       }
-    return stress_tensor<3>(c);
+    return sigma;
   }
 
   void
@@ -179,10 +179,11 @@ namespace hrcontact
         for (unsigned int i = 0; i < u_dofs.size(); ++i)
           fields.u[v][fe_u.system_to_component_index(i).first] +=
             results.displacement(u_dofs[i]) * fe_u.shape_value(i, p);
-        fields.s[v].reinit(6);
+        Vector<double> components(6);
         for (unsigned int j = 0; j < s_dofs.size(); ++j)
-          fields.s[v](fe_s.system_to_component_index(j).first) +=
+          components(fe_s.system_to_component_index(j).first) +=
             results.stress(s_dofs[j]) * fe_s.shape_value(j, p);
+        fields.s[v] = stress_tensor<3>(components);
       }
   }
 
@@ -198,76 +199,133 @@ namespace hrcontact
     const double sigma_max = results.stress.linfty_norm();
     traction_residual      = faces.residual;
     cell_residual = solution_energy = 0;
+    // Per body: its cell problem and compliance; the own cells in batches
+    // of 64 a body (each shape's factors streamed once a batch).
     std::map<types::material_id, std::unique_ptr<HexahedronEquilibration>>
-                          cells;
-    CellFields            fields;
-    std::vector<Point<3>> points;
-    std::vector<double>   weights;
+                                                    problems;
+    std::map<types::material_id, std::vector<Cell>> pending;
+    const auto flush = [&](const types::material_id body) {
+      std::vector<Cell> &cells = pending[body];
+      if (cells.empty())
+        return;
+      auto &eq = problems[body];
+      if (!eq)
+        eq = std::make_unique<HexahedronEquilibration>(
+          component_compliance(results.scene.material_of(body)));
+      solve_batch(faces,
+                  sigma_max,
+                  *eq,
+                  cells,
+                  coefficients,
+                  bound_squared,
+                  solution_energy,
+                  cell_residual);
+      cells.clear();
+    };
     for (const auto &cell :
          results.spaces.dof_handler_displacement.active_cell_iterators())
       if (results.partition.owned_cell[cell->active_cell_index()])
         {
-          const auto &law = results.scene.material_of(cell->material_id());
-          auto       &eq  = cells[cell->material_id()];
-          if (!eq)
-            eq = std::make_unique<HexahedronEquilibration>(
-              component_compliance(law));
-          FullMatrix<double> S = component_compliance(law), C(6, 6);
-          C.invert(S);
-          sample(cell, fields);
-          const unsigned int index  = cell->active_cell_index();
-          const Point<3>     centre = cell->center();
-          const auto traction = [&](const unsigned int f, const Point<3> &x) {
-            const auto   face = cell->face(f);
-            Tensor<1, 3> n =
-              cross_product_3d(face->vertex(1) - face->vertex(0),
-                               face->vertex(2) - face->vertex(0));
-            if (n * (face->center() - centre) < 0)
-              n = -n;
-            return faces.traction(face->index(), index, x, n / n.norm());
-          };
-          const auto body_force = [&](const Point<3> &x) {
-            Vector<double> f(3);
-            results.scene.body_force->vector_value(x, f);
-            return Tensor<1, 3>({f[0], f[1], f[2]});
-          };
-          // C eps(u_h): C on the components, engineering shear strains.
-          const auto target = [&](const Point<3> &x) {
-            const auto   e     = fields.strain(x);
-            const double ev[6] = {
-              e[0][0], e[1][1], e[2][2], 2 * e[0][1], 2 * e[0][2], 2 * e[1][2]};
-            Vector<double> c(6);
-            for (unsigned int a = 0; a < 6; ++a)
-              for (unsigned int b = 0; b < 6; ++b)
-                c(a) += C(a, b) * ev[b];
-            return stress_tensor<3>(c);
-          };
-          bound_squared[index] =
-            eq->solve(vertices_of(cell),
-                      traction,
-                      results.scene.body_force ?
-                        HexahedronEquilibration::VectorField(body_force) :
-                        HexahedronEquilibration::VectorField(),
-                      target,
-                      coefficients[index]);
-          // Relative to the largest stress times the cell's face area, as
-          // in 2D (the largest stress times its edge length).
-          const double h = cell->diameter();
-          cell_residual =
-            std::max(cell_residual,
-                     eq->residual / std::max(sigma_max * h * h, 1e-300));
-          for (unsigned int k = 0; k < HexahedronEquilibration::n_tetrahedra;
-               ++k)
-            {
-              eq->tetrahedron_rule(k, points, weights);
-              for (unsigned int q = 0; q < points.size(); ++q)
-                solution_energy +=
-                  weights[q] * energy(S, fields.stress(points[q]));
-            }
+          pending[cell->material_id()].push_back(cell);
+          if (pending[cell->material_id()].size() == 64)
+            flush(cell->material_id());
         }
+    for (const auto &[body, cells] : pending)
+      flush(body);
     const MPI_Comm comm = results.partition.communicator;
     cell_residual       = Utilities::MPI::max(cell_residual, comm);
     solution_energy     = Utilities::MPI::sum(solution_energy, comm);
+  }
+
+  void
+  HexahedronBound::solve_batch(const HexahedronFaceTractions &faces,
+                               const double                   sigma_max,
+                               HexahedronEquilibration       &eq,
+                               const std::vector<Cell>       &cells,
+                               std::vector<Vector<double>>   &coefficients,
+                               std::vector<double>           &bound_squared,
+                               double                        &solution_energy,
+                               double &cell_residual) const
+  {
+    const auto        &law = results.scene.material_of(cells[0]->material_id());
+    FullMatrix<double> S   = component_compliance(law), C(6, 6);
+    C.invert(S);
+    CellFields fields;
+    Cell       cell;
+    const auto traction = [&](const unsigned int f, const Point<3> &x) {
+      const auto   face = cell->face(f);
+      Tensor<1, 3> n    = cross_product_3d(face->vertex(1) - face->vertex(0),
+                                        face->vertex(2) - face->vertex(0));
+      if (n * (face->center() - cell->center()) < 0)
+        n = -n;
+      return faces.traction(face->index(),
+                            cell->active_cell_index(),
+                            x,
+                            n / n.norm());
+    };
+    const auto body_force = [&](const Point<3> &x) {
+      Vector<double> f(3);
+      results.scene.body_force->vector_value(x, f);
+      return Tensor<1, 3>({f[0], f[1], f[2]});
+    };
+    // C eps(u_h): C on the components, engineering shear strains.
+    const auto target = [&](const Point<3> &x) {
+      const auto   e     = fields.strain(x);
+      const double ev[6] = {
+        e[0][0], e[1][1], e[2][2], 2 * e[0][1], 2 * e[0][2], 2 * e[1][2]};
+      double c[6] = {0, 0, 0, 0, 0, 0};
+      for (unsigned int a = 0; a < 6; ++a)
+        for (unsigned int b = 0; b < 6; ++b)
+          c[a] += C(a, b) * ev[b];
+      SymmetricTensor<2, 3> sigma;
+      sigma[0][0] = c[0];
+      sigma[1][1] = c[1];
+      sigma[2][2] = c[2];
+      sigma[0][1] = c[3];
+      sigma[0][2] = c[4];
+      sigma[1][2] = c[5];
+      return sigma;
+    };
+    const HexahedronEquilibration::VectorField force =
+      results.scene.body_force ?
+        HexahedronEquilibration::VectorField(body_force) :
+        HexahedronEquilibration::VectorField();
+    std::vector<HexahedronEquilibration::CellData>         data(cells.size());
+    std::vector<const HexahedronEquilibration::CellData *> batch;
+    for (unsigned int i = 0; i < cells.size(); ++i)
+      {
+        cell = cells[i];
+        sample(cell, fields);
+        eq.data(vertices_of(cell), traction, force, target, data[i]);
+        batch.push_back(&data[i]);
+      }
+    std::vector<Vector<double>> x;
+    std::vector<double>         residuals;
+    eq.solve(batch, x, residuals);
+    std::vector<Point<3>> points;
+    std::vector<double>   weights;
+    for (unsigned int i = 0; i < cells.size(); ++i)
+      {
+        cell                     = cells[i];
+        const unsigned int index = cell->active_cell_index();
+        sample(cell, fields);
+        eq.set_cell(vertices_of(cell));
+        coefficients[index]  = x[i];
+        bound_squared[index] = eq.distance(x[i], target);
+        // Relative to the largest stress times the cell's face area, as in
+        // 2D (the largest stress times its edge length).
+        const double h = cell->diameter();
+        cell_residual =
+          std::max(cell_residual,
+                   residuals[i] / std::max(sigma_max * h * h, 1e-300));
+        for (unsigned int k = 0; k < HexahedronEquilibration::n_tetrahedra; ++k)
+          {
+            eq.tetrahedron_rule(k, points, weights);
+            for (unsigned int q = 0; q < points.size(); ++q)
+              solution_energy +=
+                weights[q] * energy(S, fields.stress(points[q]));
+          }
+      }
   }
 
   std::array<double, 4>

@@ -12,17 +12,19 @@
 extern "C"
 {
   void
-  dgemv_(const char   *trans,
+  dgemm_(const char   *transa,
+         const char   *transb,
          const int    *m,
          const int    *n,
+         const int    *k,
          const double *alpha,
          const double *a,
          const int    *lda,
-         const double *x,
-         const int    *incx,
+         const double *b,
+         const int    *ldb,
          const double *beta,
-         double       *y,
-         const int    *incy);
+         double       *c,
+         const int    *ldc);
 }
 
 namespace hrcontact
@@ -315,20 +317,24 @@ namespace hrcontact
           n = -n;
         triangle_rows(tri, n / n.norm(), k, -1, face_of_tet[k]);
       }
+    // The inner rows' data are zero: only their matrix needs the rules.
+    if (!A)
+      r += inner.size() * 3 * n_t;
     for (const InnerFace &f : inner)
-      {
-        const std::array<Point<3>, 3> tri = {{geometry.P[f.points[0]],
-                                              geometry.P[f.points[1]],
-                                              geometry.P[f.points[2]]}};
-        Tensor<1, 3> n = cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
-        // From tetrahedron a to b: away from a's centroid.
-        Point<3> centroid_a;
-        for (unsigned int i = 0; i < 4; ++i)
-          centroid_a += geometry.P[tets[f.a][i]] / 4.;
-        if (n * (tri[0] - centroid_a) < 0)
-          n = -n;
-        triangle_rows(tri, n / n.norm(), f.a, f.b, -1);
-      }
+      if (A)
+        {
+          const std::array<Point<3>, 3> tri = {{geometry.P[f.points[0]],
+                                                geometry.P[f.points[1]],
+                                                geometry.P[f.points[2]]}};
+          Tensor<1, 3> n = cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
+          // From tetrahedron a to b: away from a's centroid.
+          Point<3> centroid_a;
+          for (unsigned int i = 0; i < 4; ++i)
+            centroid_a += geometry.P[tets[f.a][i]] / 4.;
+          if (n * (tri[0] - centroid_a) < 0)
+            n = -n;
+          triangle_rows(tri, n / n.norm(), f.a, f.b, -1);
+        }
     AssertDimension(r, n_rows);
   }
 
@@ -405,12 +411,12 @@ namespace hrcontact
     return sum;
   }
 
-  double
-  HexahedronEquilibration::solve(const std::array<Point<3>, 8> &vertices,
-                                 const Traction                &traction,
-                                 const VectorField             &body_force,
-                                 const StressField             &target,
-                                 Vector<double>                &x)
+  void
+  HexahedronEquilibration::data(const std::array<Point<3>, 8> &vertices,
+                                const Traction                &traction,
+                                const VectorField             &body_force,
+                                const StressField             &target,
+                                CellData                      &cell)
   {
     set_cell(vertices);
     const Geometry &G = geometry;
@@ -419,70 +425,156 @@ namespace hrcontact
     for (unsigned int v = 1; v < 8; ++v)
       for (unsigned int d = 0; d < 3; ++d)
         key.push_back(std::llround((G.P[v][d] - G.P[0][d]) / G.h * 1e10));
-    auto           it = shapes.find(key);
-    Vector<double> c, g;
+    auto it = shapes.find(key);
     if (it == shapes.end())
       {
         Shape              shape;
         FullMatrix<double> H;
         shape.h = G.h;
-        constraints(traction, body_force, &shape.A, c);
-        energy(target, &H, g);
+        constraints(traction, body_force, &shape.A, cell.c0);
+        energy(target, &H, cell.g0);
         shape.least_squares.factor(shape.A);
         shape.least_squares.prepare(H);
         it = shapes.emplace(key, std::move(shape)).first;
       }
     else
       {
-        constraints(traction, body_force, nullptr, c);
-        energy(target, nullptr, g);
+        constraints(traction, body_force, nullptr, cell.c0);
+        energy(target, nullptr, cell.g0);
       }
     Shape &shape = it->second;
-    // A shape that repeats: the explicit map pays from the second cell on.
-    if (++shape.uses == 2)
-      shape.least_squares.make_explicit();
+    ++shape.uses;
     rank       = shape.least_squares.rank();
     n_unknowns = shape.A.n();
     // A similar cell of size h: A scales as (h / h_0)^2, the energy as
     // (h / h_0)^3 (the unknowns are stresses).
-    const double   s = G.h / shape.h;
-    Vector<double> c0(c), g0(g);
-    c0 /= s * s;
-    g0 /= s * s * s;
-    shape.least_squares.solve(g0, c0, x);
-    // A_0 x - c_0 by BLAS (A's row-major entries are A^T column-major).
-    Vector<double> r(c.size());
-    const auto     defect = [&]() {
-      const int    rows = shape.A.m(), columns = shape.A.n(), one = 1;
-      const double plus = 1, zero = 0;
-      dgemv_("T",
-             &columns,
-             &rows,
+    cell.shape = &shape;
+    cell.s     = G.h / shape.h;
+    cell.c0 /= cell.s * cell.s;
+    cell.g0 /= cell.s * cell.s * cell.s;
+  }
+
+  void
+  HexahedronEquilibration::solve(const std::vector<const CellData *> &batch,
+                                 std::vector<Vector<double>>         &x,
+                                 std::vector<double>                 &residuals)
+  {
+    x.resize(batch.size());
+    residuals.assign(batch.size(), 0.);
+    std::vector<bool> done(batch.size(), false);
+    for (unsigned int first = 0; first < batch.size(); ++first)
+      if (!done[first])
+        {
+          // This shape's cells, as columns.
+          Shape &shape = *const_cast<Shape *>(
+            static_cast<const Shape *>(batch[first]->shape));
+          std::vector<unsigned int> cells;
+          for (unsigned int i = first; i < batch.size(); ++i)
+            if (batch[i]->shape == batch[first]->shape)
+              {
+                cells.push_back(i);
+                done[i] = true;
+              }
+          // A shape that repeats: the explicit map pays from its second
+          // cell on.
+          if (shape.uses >= 2)
+            shape.least_squares.make_explicit();
+          solve_shape(shape, batch, cells, x, residuals);
+        }
+  }
+
+  void
+  HexahedronEquilibration::solve_shape(
+    const Shape                         &shape,
+    const std::vector<const CellData *> &batch,
+    const std::vector<unsigned int>     &cells,
+    std::vector<Vector<double>>         &x,
+    std::vector<double>                 &residuals) const
+  {
+    const int           m = shape.A.m(), n = shape.A.n(), k = cells.size();
+    std::vector<double> G(n * k), C(m * k), X, R(m * k);
+    for (int j = 0; j < k; ++j)
+      {
+        std::copy(batch[cells[j]]->g0.begin(),
+                  batch[cells[j]]->g0.end(),
+                  G.begin() + j * n);
+        std::copy(batch[cells[j]]->c0.begin(),
+                  batch[cells[j]]->c0.end(),
+                  C.begin() + j * m);
+      }
+    shape.least_squares.solve_many(G, C, k, X);
+    // A_0 X - C (A's row-major entries are A^T column-major), and per
+    // column its size relative to the data.
+    const auto defect = [&](std::vector<double> &relative) {
+      R                 = C;
+      const double plus = 1, minus = -1;
+      dgemm_("T",
+             "N",
+             &m,
+             &k,
+             &n,
              &plus,
              &shape.A(0, 0),
-             &columns,
-             x.begin(),
-             &one,
-             &zero,
-             r.begin(),
-             &one);
-      r -= c0;
-      return r.l2_norm() / std::max(c0.l2_norm(), 1e-300);
+             &n,
+             X.data(),
+             &n,
+             &minus,
+             R.data(),
+             &m);
+      relative.assign(k, 0.);
+      for (int j = 0; j < k; ++j)
+        {
+          double r2 = 0, c2 = 0;
+          for (int i = 0; i < m; ++i)
+            {
+              r2 += R[i + j * m] * R[i + j * m];
+              c2 += C[i + j * m] * C[i + j * m];
+            }
+          relative[j] = std::sqrt(r2 / std::max(c2, 1e-300));
+        }
     };
-    double relative = defect();
-    // The explicit map loses digits where R_11 is ill conditioned: one
-    // step of refinement (the minimiser is linear in the data) brings the
-    // constraints back to round-off.
-    if (relative > 1e-11)
+    std::vector<double> relative;
+    defect(relative);
+    // The explicit map loses digits where R_11 is ill conditioned: where a
+    // cell's constraints are off by more than 1e-11 of its data, one step
+    // of refinement (the minimiser is linear in the data) for all.
+    if (*std::max_element(relative.begin(), relative.end()) > 1e-11)
       {
-        Vector<double> zero_g(x.size()), correction;
-        r *= -1.;
-        shape.least_squares.solve(zero_g, r, correction);
-        x += correction;
-        relative = defect();
+        std::vector<double> zero(n * k, 0.), minus_R(R), correction;
+        for (double &v : minus_R)
+          v = -v;
+        shape.least_squares.solve_many(zero, minus_R, k, correction);
+        for (int i = 0; i < n * k; ++i)
+          X[i] += correction[i];
+        defect(relative);
       }
-    // In this cell's units (A = s^2 A_0).
-    residual = s * s * r.linfty_norm();
+    for (int j = 0; j < k; ++j)
+      {
+        const double s = batch[cells[j]]->s;
+        x[cells[j]].reinit(n);
+        std::copy(X.begin() + j * n,
+                  X.begin() + (j + 1) * n,
+                  x[cells[j]].begin());
+        for (int i = 0; i < m; ++i)
+          residuals[cells[j]] =
+            std::max(residuals[cells[j]], s * s * std::abs(R[i + j * m]));
+      }
+  }
+
+  double
+  HexahedronEquilibration::solve(const std::array<Point<3>, 8> &vertices,
+                                 const Traction                &traction,
+                                 const VectorField             &body_force,
+                                 const StressField             &target,
+                                 Vector<double>                &x)
+  {
+    CellData cell;
+    data(vertices, traction, body_force, target, cell);
+    std::vector<Vector<double>> xs;
+    std::vector<double>         residuals;
+    solve({&cell}, xs, residuals);
+    x        = xs[0];
+    residual = residuals[0];
     return distance(x, target);
   }
 } // namespace hrcontact

@@ -45,6 +45,15 @@ namespace hrcontact
           const dealii::Vector<double> &c,
           dealii::Vector<double>       &x) const;
 
+    /** k problems at once (column-major G: n x k, C: m x k, X: n x k), as
+     * matrix products when the map is explicit: the factors are streamed
+     * from memory once for all of them, not once a problem. */
+    void
+    solve_many(const std::vector<double> &G,
+               const std::vector<double> &C,
+               const int                  k,
+               std::vector<double>       &X_out) const;
+
     /** Keeps the map from c to x's row-space part explicitly, X = Q_1
      * R_11^-T (n x r): one matrix-vector product a solve instead of the
      * reflectors and a triangular solve, for a shape solved many times
@@ -56,6 +65,11 @@ namespace hrcontact
     rank() const
     {
       return r;
+    }
+    bool
+    is_explicit() const
+    {
+      return !X.empty();
     }
 
   private:

@@ -14,6 +14,9 @@
 
 namespace hrcontact
 {
+  class HexahedronFaceTractions;
+  class HexahedronEquilibration;
+
   /**
    * The error bound in 3D (EquilibratedStress's two steps on a conforming
    * mesh of parallelepipeds, linear elastic bodies): HexahedronFaceTractions
@@ -54,10 +57,10 @@ namespace hrcontact
      * values. */
     struct CellFields
     {
-      dealii::Point<3>                      v0;
-      dealii::Tensor<2, 3>                  J_inv;
-      std::array<dealii::Tensor<1, 3>, 8>   u;
-      std::array<dealii::Vector<double>, 8> s;
+      dealii::Point<3>                             v0;
+      dealii::Tensor<2, 3>                         J_inv;
+      std::array<dealii::Tensor<1, 3>, 8>          u;
+      std::array<dealii::SymmetricTensor<2, 3>, 8> s;
       dealii::SymmetricTensor<2, 3>
       strain(const dealii::Point<3> &x) const;
       dealii::SymmetricTensor<2, 3>
@@ -66,6 +69,18 @@ namespace hrcontact
     void
     sample(const dealii::DoFHandler<3>::active_cell_iterator &cell,
            CellFields                                        &fields) const;
+    using Cell = dealii::DoFHandler<3>::active_cell_iterator;
+    /** A batch of cells of one body: their data, one solve, their shares
+     * of the bound and of the stresses' energy. */
+    void
+    solve_batch(const HexahedronFaceTractions       &faces,
+                const double                         sigma_max,
+                HexahedronEquilibration             &eq,
+                const std::vector<Cell>             &cells,
+                std::vector<dealii::Vector<double>> &coefficients,
+                std::vector<double>                 &bound_squared,
+                double                              &solution_energy,
+                double                              &cell_residual) const;
   };
 } // namespace hrcontact
 

@@ -73,6 +73,38 @@ namespace hrcontact
           const StressField                     &target,
           dealii::Vector<double>                &x);
 
+    /** One cell's data for a batched solve (data()). */
+    struct CellData
+    {
+      /** The shape's factors (opaque), the cell's size over theirs. */
+      const void *shape = nullptr;
+      double      s     = 1;
+      /** The constraints' data and the energy's linear term, scaled to the
+       * shape's first cell. */
+      dealii::Vector<double> c0, g0;
+    };
+    /** Sets the cell of @p vertices, finds or factors its shape, and
+     * computes its data. */
+    void
+    data(const std::array<dealii::Point<3>, 8> &vertices,
+         const Traction                        &traction,
+         const VectorField                     &body_force,
+         const StressField                     &target,
+         CellData                              &cell);
+    /**
+     * The coefficients of the cells of @p batch together: per shape, one
+     * matrix product for all its cells (its factors, some 30 MB, streamed
+     * from memory once rather than once a cell), and the constraints'
+     * largest defect per cell, in its own units (@p residuals).
+     */
+    void
+    solve(const std::vector<const CellData *> &batch,
+          std::vector<dealii::Vector<double>> &x,
+          std::vector<double>                 &residuals);
+    /** |tau - target|^2_{C^-1} on the cell set last (set_cell()). */
+    double
+    distance(const dealii::Vector<double> &x, const StressField &target) const;
+
     /** Sets the cell (solve() does it too). */
     void
     set_cell(const std::array<dealii::Point<3>, 8> &vertices);
@@ -126,6 +158,13 @@ namespace hrcontact
     Geometry                                geometry;
     std::map<std::vector<long long>, Shape> shapes;
 
+    /** The cells @p cells of @p batch, all of @p shape. */
+    void
+    solve_shape(const Shape                         &shape,
+                const std::vector<const CellData *> &batch,
+                const std::vector<unsigned int>     &cells,
+                std::vector<dealii::Vector<double>> &x,
+                std::vector<double>                 &residuals) const;
     unsigned int
     index(const unsigned int k,
           const unsigned int c,
@@ -150,8 +189,6 @@ namespace hrcontact
     energy(const StressField          &target,
            dealii::FullMatrix<double> *H,
            dealii::Vector<double>     &g) const;
-    double
-    distance(const dealii::Vector<double> &x, const StressField &target) const;
   };
 } // namespace hrcontact
 
