@@ -311,7 +311,7 @@ namespace hrcontact
         sample(cell, fields);
         eq.set_cell(vertices_of(cell));
         coefficients[index]  = x[i];
-        bound_squared[index] = eq.distance(x[i], target);
+        bound_squared[index] = eq.distance(x[i], data[i].targets);
         // Relative to the largest stress times the cell's face area, as in
         // 2D (the largest stress times its edge length).
         const double h = cell->diameter();

@@ -8,25 +8,6 @@
 #include <algorithm>
 #include <cmath>
 
-// Reference BLAS (column-major), linked through deal.II.
-extern "C"
-{
-  void
-  dgemm_(const char   *transa,
-         const char   *transb,
-         const int    *m,
-         const int    *n,
-         const int    *k,
-         const double *alpha,
-         const double *a,
-         const int    *lda,
-         const double *b,
-         const int    *ldb,
-         const double *beta,
-         double       *c,
-         const int    *ldc);
-}
-
 namespace hrcontact
 {
   using namespace dealii;
@@ -203,15 +184,35 @@ namespace hrcontact
     return g;
   }
 
+  void
+  HexahedronEquilibration::monomial_values(
+    const Point<3>                                 &x,
+    const std::vector<std::array<unsigned int, 3>> &exps,
+    double                                         *values) const
+  {
+    const Tensor<1, 3> xi = (x - geometry.P[14]) / geometry.h;
+    double             p[3][3];
+    for (unsigned int d = 0; d < 3; ++d)
+      {
+        p[d][0] = 1;
+        p[d][1] = xi[d];
+        p[d][2] = xi[d] * xi[d];
+      }
+    for (unsigned int m = 0; m < exps.size(); ++m)
+      values[m] = p[0][exps[m][0]] * p[1][exps[m][1]] * p[2][exps[m][2]];
+  }
+
   SymmetricTensor<2, 3>
   HexahedronEquilibration::stress(const Vector<double> &x,
                                   const unsigned int    k,
                                   const Point<3>       &point) const
   {
     SymmetricTensor<2, 3> s;
+    double                values[10];
+    monomial_values(point, monomials, values);
     for (unsigned int m = 0; m < monomials.size(); ++m)
       {
-        const double v = monomial(monomials[m], point);
+        const double v = values[m];
         for (unsigned int i = 0; i < 3; ++i)
           for (unsigned int j = i; j < 3; ++j)
             s[i][j] += x(index(k, component(i, j), m)) * v;
@@ -239,6 +240,9 @@ namespace hrcontact
         std::array<Point<3>, 4> corners;
         for (unsigned int i = 0; i < 4; ++i)
           corners[i] = geometry.P[tets[k][i]];
+        // No body force: these rows' data are zero.
+        if (!A && !body_force)
+          continue;
         simplex_rule<3>(corners, 3, points, weights);
         for (unsigned int q = 0; q < points.size(); ++q)
           {
@@ -339,10 +343,13 @@ namespace hrcontact
   }
 
   void
-  HexahedronEquilibration::energy(const StressField  &target,
-                                  FullMatrix<double> *H,
-                                  Vector<double>     &g) const
+  HexahedronEquilibration::energy(
+    const StressField                  &target,
+    FullMatrix<double>                 *H,
+    Vector<double>                     &g,
+    std::vector<SymmetricTensor<2, 3>> &targets) const
   {
+    targets.clear();
     const unsigned int n_m = monomials.size();
     if (H)
       H->reinit(n_tetrahedra * 6 * n_m, n_tetrahedra * 6 * n_m);
@@ -360,9 +367,9 @@ namespace hrcontact
         simplex_rule<3>(corners, 3, points, weights);
         for (unsigned int q = 0; q < points.size(); ++q)
           {
-            for (unsigned int m = 0; m < n_m; ++m)
-              values[m] = monomial(monomials[m], points[q]);
-            const SymmetricTensor<2, 3> s    = target(points[q]);
+            monomial_values(points[q], monomials, values.data());
+            targets.push_back(target(points[q]));
+            const SymmetricTensor<2, 3> s    = targets.back();
             const double                v[6] = {
                              s[0][0], s[1][1], s[2][2], s[0][1], s[0][2], s[1][2]};
             for (unsigned int c1 = 0; c1 < 6; ++c1)
@@ -385,9 +392,11 @@ namespace hrcontact
   }
 
   double
-  HexahedronEquilibration::distance(const Vector<double> &x,
-                                    const StressField    &target) const
+  HexahedronEquilibration::distance(
+    const Vector<double>                     &x,
+    const std::vector<SymmetricTensor<2, 3>> &targets) const
   {
+    unsigned int          point = 0;
     std::vector<Point<3>> points;
     std::vector<double>   weights;
     double                sum = 0;
@@ -400,7 +409,7 @@ namespace hrcontact
         for (unsigned int q = 0; q < points.size(); ++q)
           {
             const SymmetricTensor<2, 3> d =
-              stress(x, k, points[q]) - target(points[q]);
+              stress(x, k, points[q]) - targets[point++];
             const double v[6] = {
               d[0][0], d[1][1], d[2][2], d[0][1], d[0][2], d[1][2]};
             for (unsigned int a = 0; a < 6; ++a)
@@ -428,24 +437,20 @@ namespace hrcontact
     auto it = shapes.find(key);
     if (it == shapes.end())
       {
-        Shape              shape;
-        FullMatrix<double> H;
-        shape.h = G.h;
-        constraints(traction, body_force, &shape.A, cell.c0);
-        energy(target, &H, cell.g0);
-        shape.least_squares.factor(shape.A);
-        shape.least_squares.prepare(H);
-        it = shapes.emplace(key, std::move(shape)).first;
+        FullMatrix<double> A, H;
+        constraints(traction, body_force, &A, cell.c0);
+        energy(target, &H, cell.g0, cell.targets);
+        it = shapes.emplace(key, ShapeFactors(std::move(A), H, G.h)).first;
       }
     else
       {
         constraints(traction, body_force, nullptr, cell.c0);
-        energy(target, nullptr, cell.g0);
+        energy(target, nullptr, cell.g0, cell.targets);
       }
-    Shape &shape = it->second;
+    ShapeFactors &shape = it->second;
     ++shape.uses;
-    rank       = shape.least_squares.rank();
-    n_unknowns = shape.A.n();
+    rank       = shape.rank();
+    n_unknowns = shape.n_unknowns();
     // A similar cell of size h: A scales as (h / h_0)^2, the energy as
     // (h / h_0)^3 (the unknowns are stresses).
     cell.shape = &shape;
@@ -466,8 +471,8 @@ namespace hrcontact
       if (!done[first])
         {
           // This shape's cells, as columns.
-          Shape &shape = *const_cast<Shape *>(
-            static_cast<const Shape *>(batch[first]->shape));
+          ShapeFactors &shape = *const_cast<ShapeFactors *>(
+            static_cast<const ShapeFactors *>(batch[first]->shape));
           std::vector<unsigned int> cells;
           for (unsigned int i = first; i < batch.size(); ++i)
             if (batch[i]->shape == batch[first]->shape)
@@ -475,90 +480,27 @@ namespace hrcontact
                 cells.push_back(i);
                 done[i] = true;
               }
-          // A shape that repeats: the explicit map pays from its second
-          // cell on.
-          if (shape.uses >= 2)
-            shape.least_squares.make_explicit();
-          solve_shape(shape, batch, cells, x, residuals);
-        }
-  }
-
-  void
-  HexahedronEquilibration::solve_shape(
-    const Shape                         &shape,
-    const std::vector<const CellData *> &batch,
-    const std::vector<unsigned int>     &cells,
-    std::vector<Vector<double>>         &x,
-    std::vector<double>                 &residuals) const
-  {
-    const int           m = shape.A.m(), n = shape.A.n(), k = cells.size();
-    std::vector<double> G(n * k), C(m * k), X, R(m * k);
-    for (int j = 0; j < k; ++j)
-      {
-        std::copy(batch[cells[j]]->g0.begin(),
-                  batch[cells[j]]->g0.end(),
-                  G.begin() + j * n);
-        std::copy(batch[cells[j]]->c0.begin(),
-                  batch[cells[j]]->c0.end(),
-                  C.begin() + j * m);
-      }
-    shape.least_squares.solve_many(G, C, k, X);
-    // A_0 X - C (A's row-major entries are A^T column-major), and per
-    // column its size relative to the data.
-    const auto defect = [&](std::vector<double> &relative) {
-      R                 = C;
-      const double plus = 1, minus = -1;
-      dgemm_("T",
-             "N",
-             &m,
-             &k,
-             &n,
-             &plus,
-             &shape.A(0, 0),
-             &n,
-             X.data(),
-             &n,
-             &minus,
-             R.data(),
-             &m);
-      relative.assign(k, 0.);
-      for (int j = 0; j < k; ++j)
-        {
-          double r2 = 0, c2 = 0;
-          for (int i = 0; i < m; ++i)
+          const int m = batch[first]->c0.size(), n = shape.n_unknowns(),
+                    k = cells.size();
+          std::vector<double> G(n * k), C(m * k), X, defect;
+          for (int j = 0; j < k; ++j)
             {
-              r2 += R[i + j * m] * R[i + j * m];
-              c2 += C[i + j * m] * C[i + j * m];
+              const CellData &cell = *batch[cells[j]];
+              std::copy(cell.g0.begin(), cell.g0.end(), G.begin() + j * n);
+              std::copy(cell.c0.begin(), cell.c0.end(), C.begin() + j * m);
             }
-          relative[j] = std::sqrt(r2 / std::max(c2, 1e-300));
+          shape.solve(G, C, k, X, defect);
+          // Back in each cell's units (A = s^2 A_0).
+          for (int j = 0; j < k; ++j)
+            {
+              const double s = batch[cells[j]]->s;
+              x[cells[j]].reinit(n);
+              std::copy(X.begin() + j * n,
+                        X.begin() + (j + 1) * n,
+                        x[cells[j]].begin());
+              residuals[cells[j]] = s * s * defect[j];
+            }
         }
-    };
-    std::vector<double> relative;
-    defect(relative);
-    // The explicit map loses digits where R_11 is ill conditioned: where a
-    // cell's constraints are off by more than 1e-11 of its data, one step
-    // of refinement (the minimiser is linear in the data) for all.
-    if (*std::max_element(relative.begin(), relative.end()) > 1e-11)
-      {
-        std::vector<double> zero(n * k, 0.), minus_R(R), correction;
-        for (double &v : minus_R)
-          v = -v;
-        shape.least_squares.solve_many(zero, minus_R, k, correction);
-        for (int i = 0; i < n * k; ++i)
-          X[i] += correction[i];
-        defect(relative);
-      }
-    for (int j = 0; j < k; ++j)
-      {
-        const double s = batch[cells[j]]->s;
-        x[cells[j]].reinit(n);
-        std::copy(X.begin() + j * n,
-                  X.begin() + (j + 1) * n,
-                  x[cells[j]].begin());
-        for (int i = 0; i < m; ++i)
-          residuals[cells[j]] =
-            std::max(residuals[cells[j]], s * s * std::abs(R[i + j * m]));
-      }
   }
 
   double
@@ -575,6 +517,6 @@ namespace hrcontact
     solve({&cell}, xs, residuals);
     x        = xs[0];
     residual = residuals[0];
-    return distance(x, target);
+    return distance(x, cell.targets);
   }
 } // namespace hrcontact

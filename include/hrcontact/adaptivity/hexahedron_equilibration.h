@@ -8,7 +8,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <hrcontact/adaptivity/constrained_least_squares.h>
+#include <hrcontact/adaptivity/shape_factors.h>
 
 #include <array>
 #include <functional>
@@ -82,6 +82,9 @@ namespace hrcontact
       /** The constraints' data and the energy's linear term, scaled to the
        * shape's first cell. */
       dealii::Vector<double> c0, g0;
+      /** The target stress at the rule's points, tetrahedron by
+       * tetrahedron. */
+      std::vector<dealii::SymmetricTensor<2, 3>> targets;
     };
     /** Sets the cell of @p vertices, finds or factors its shape, and
      * computes its data. */
@@ -101,9 +104,11 @@ namespace hrcontact
     solve(const std::vector<const CellData *> &batch,
           std::vector<dealii::Vector<double>> &x,
           std::vector<double>                 &residuals);
-    /** |tau - target|^2_{C^-1} on the cell set last (set_cell()). */
+    /** |tau - target|^2_{C^-1} on the cell set last (set_cell()), the
+     * target at the rule's points as data() kept it. */
     double
-    distance(const dealii::Vector<double> &x, const StressField &target) const;
+    distance(const dealii::Vector<double>                     &x,
+             const std::vector<dealii::SymmetricTensor<2, 3>> &targets) const;
 
     /** Sets the cell (solve() does it too). */
     void
@@ -134,15 +139,6 @@ namespace hrcontact
       std::array<dealii::Point<3>, 15> P;
       double                           h = 1;
     };
-    struct Shape
-    {
-      /** The constraints on the shape's first cell, of size h. */
-      dealii::FullMatrix<double> A;
-      ConstrainedLeastSquares    least_squares;
-      double                     h = 1;
-      /** Cells solved with these factors. */
-      unsigned int uses = 0;
-    };
     /** Tetrahedron k: (centre, face centre, two vertices of an edge of the
      * face); its face without the centre is on the cell's boundary. */
     std::array<std::array<unsigned int, 4>, n_tetrahedra> tets;
@@ -153,18 +149,11 @@ namespace hrcontact
       unsigned int                a, b;
       std::array<unsigned int, 3> points;
     };
-    std::vector<InnerFace>                  inner;
-    dealii::FullMatrix<double>              S;
-    Geometry                                geometry;
-    std::map<std::vector<long long>, Shape> shapes;
+    std::vector<InnerFace>                         inner;
+    dealii::FullMatrix<double>                     S;
+    Geometry                                       geometry;
+    std::map<std::vector<long long>, ShapeFactors> shapes;
 
-    /** The cells @p cells of @p batch, all of @p shape. */
-    void
-    solve_shape(const Shape                         &shape,
-                const std::vector<const CellData *> &batch,
-                const std::vector<unsigned int>     &cells,
-                std::vector<dealii::Vector<double>> &x,
-                std::vector<double>                 &residuals) const;
     unsigned int
     index(const unsigned int k,
           const unsigned int c,
@@ -186,9 +175,15 @@ namespace hrcontact
                 dealii::FullMatrix<double> *A,
                 dealii::Vector<double>     &c);
     void
-    energy(const StressField          &target,
-           dealii::FullMatrix<double> *H,
-           dealii::Vector<double>     &g) const;
+    energy(const StressField                          &target,
+           dealii::FullMatrix<double>                 *H,
+           dealii::Vector<double>                     &g,
+           std::vector<dealii::SymmetricTensor<2, 3>> &targets) const;
+    /** The monomials of exponents @p exps at @p x (all at once). */
+    void
+    monomial_values(const dealii::Point<3>                         &x,
+                    const std::vector<std::array<unsigned int, 3>> &exps,
+                    double *values) const;
   };
 } // namespace hrcontact
 

@@ -1,0 +1,60 @@
+#ifndef hrcontact_shape_factors_h
+#define hrcontact_shape_factors_h
+
+#include <deal.II/lac/full_matrix.h>
+
+#include <hrcontact/adaptivity/constrained_least_squares.h>
+
+#include <vector>
+
+namespace hrcontact
+{
+  /**
+   * The factors of one cell shape's local problem of the error bound (the
+   * constraints A, m x n, and the energy H of its first cell, of size h),
+   * and the solve of many cells of that shape at once: from the shape's
+   * second cell on the map from the data to x is explicit
+   * (ConstrainedLeastSquares::make_explicit) and applied to all the cells'
+   * data as one matrix product, and one step of iterative refinement
+   * restores the digits that map loses where a cell's constraints are off
+   * by more than 1e-11 of its data.
+   */
+  class ShapeFactors
+  {
+  public:
+    ShapeFactors(dealii::FullMatrix<double>      &&A,
+                 const dealii::FullMatrix<double> &H,
+                 const double                      h);
+
+    /** The size of the cell the factors were computed on. */
+    double h;
+    /** Cells that announced themselves (the explicit map pays from 2). */
+    unsigned int uses = 0;
+
+    unsigned int
+    rank() const
+    {
+      return least_squares.rank();
+    }
+    unsigned int
+    n_unknowns() const
+    {
+      return A.n();
+    }
+
+    /** k problems (column-major data G, n x k, and C, m x k): X (n x k)
+     * and, per column, the largest entry of A x - c. */
+    void
+    solve(const std::vector<double> &G,
+          const std::vector<double> &C,
+          const int                  k,
+          std::vector<double>       &X,
+          std::vector<double>       &largest_defect);
+
+  private:
+    dealii::FullMatrix<double> A;
+    ConstrainedLeastSquares    least_squares;
+  };
+} // namespace hrcontact
+
+#endif
