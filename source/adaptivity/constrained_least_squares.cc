@@ -1,106 +1,10 @@
 #include <deal.II/base/exceptions.h>
 
 #include <hrcontact/adaptivity/constrained_least_squares.h>
+#include <hrcontact/core/blas_lapack.h>
 
 #include <algorithm>
 #include <cmath>
-
-// Reference LAPACK interfaces (column-major), linked through deal.II.
-extern "C"
-{
-  void
-  dgeqp3_(const int *m,
-          const int *n,
-          double    *a,
-          const int *lda,
-          int       *jpvt,
-          double    *tau,
-          double    *work,
-          const int *lwork,
-          int       *info);
-  void
-  dormqr_(const char   *side,
-          const char   *trans,
-          const int    *m,
-          const int    *n,
-          const int    *k,
-          const double *a,
-          const int    *lda,
-          const double *tau,
-          double       *c,
-          const int    *ldc,
-          double       *work,
-          const int    *lwork,
-          int          *info);
-  void
-  dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
-  void
-  dgemm_(const char   *transa,
-         const char   *transb,
-         const int    *m,
-         const int    *n,
-         const int    *k,
-         const double *alpha,
-         const double *a,
-         const int    *lda,
-         const double *b,
-         const int    *ldb,
-         const double *beta,
-         double       *c,
-         const int    *ldc);
-  void
-  dorgqr_(const int    *m,
-          const int    *n,
-          const int    *k,
-          double       *a,
-          const int    *lda,
-          const double *tau,
-          double       *work,
-          const int    *lwork,
-          int          *info);
-  void
-  dtrsm_(const char   *side,
-         const char   *uplo,
-         const char   *transa,
-         const char   *diag,
-         const int    *m,
-         const int    *n,
-         const double *alpha,
-         const double *a,
-         const int    *lda,
-         double       *b,
-         const int    *ldb);
-  void
-  dtrsv_(const char   *uplo,
-         const char   *trans,
-         const char   *diag,
-         const int    *n,
-         const double *a,
-         const int    *lda,
-         double       *x,
-         const int    *incx);
-  void
-  dgemv_(const char   *trans,
-         const int    *m,
-         const int    *n,
-         const double *alpha,
-         const double *a,
-         const int    *lda,
-         const double *x,
-         const int    *incx,
-         const double *beta,
-         double       *y,
-         const int    *incy);
-  void
-  dpotrs_(const char   *uplo,
-          const int    *n,
-          const int    *nrhs,
-          const double *a,
-          const int    *lda,
-          double       *b,
-          const int    *ldb,
-          int          *info);
-}
 
 namespace hrcontact
 {

@@ -6,8 +6,6 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
 
-#include <deal.II/lac/lapack_full_matrix.h>
-
 #include <hrcontact/adaptivity/face_tractions.h>
 #include <hrcontact/adaptivity/refined_face_exchange.h>
 #include <hrcontact/postprocess/field_values.h>
@@ -39,34 +37,7 @@ namespace hrcontact
   FaceTractions::FaceTractions(const Results<2> &results)
     : results(results)
   {
-    // The cells whose stresses and displacements this process holds (its
-    // own and its ghosts): the vertex problems of its own cells' vertices
-    // need no more.
-    usable.assign(results.triangulation().n_active_cells(), false);
-    std::vector<types::global_dof_index> dofs;
-    const auto holds = [](const FieldVector &v, const auto &indices) {
-      for (const auto i : indices)
-        if (!v.in_local_range(i) && !v.get_partitioner()->is_ghost_entry(i))
-          return false;
-      return true;
-    };
-    for (const auto &cell :
-         results.spaces.dof_handler_stress.active_cell_iterators())
-      if (!cell->is_artificial())
-        {
-          dofs.resize(cell->get_fe().n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
-          bool ok = holds(results.stress, dofs);
-          const DoFHandler<2>::active_cell_iterator u_cell(
-            &results.triangulation(),
-            cell->level(),
-            cell->index(),
-            &results.spaces.dof_handler_displacement);
-          dofs.resize(u_cell->get_fe().n_dofs_per_cell());
-          u_cell->get_dof_indices(dofs);
-          usable[cell->active_cell_index()] =
-            ok && holds(results.displacement, dofs);
-        }
+    usable = cells_held_whole(results);
     if (!results.system.contact_rows.empty())
       contact_tractions = std::make_unique<ContactTractions>(results);
     classify_faces();
@@ -342,35 +313,6 @@ namespace hrcontact
               }
           }
       }
-  }
-
-  const FullMatrix<double> &
-  FaceTractions::pseudo_inverse(const std::vector<signed char> &key)
-  {
-    // Kept per sign pattern (n, m, then A row by row): most vertices share
-    // one of a few.
-    auto it = pseudo_inverses.find(key);
-    if (it == pseudo_inverses.end())
-      {
-        const unsigned int       n = key[0], m = key[1];
-        LAPACKFullMatrix<double> pinv(n, m);
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = 0; j < m; ++j)
-            pinv(i, j) = key[2 + i * m + j];
-        pinv.compute_inverse_svd(1e-12);
-        FullMatrix<double> P(m, n);
-        Vector<double>     unit(n), column(m);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            unit    = 0;
-            unit(i) = 1;
-            pinv.vmult(column, unit);
-            for (unsigned int j = 0; j < m; ++j)
-              P(j, i) = column(j);
-          }
-        it = pseudo_inverses.emplace(key, std::move(P)).first;
-      }
-    return it->second;
   }
 
   unsigned int

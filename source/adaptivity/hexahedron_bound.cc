@@ -5,6 +5,7 @@
 #include <hrcontact/adaptivity/hexahedron_bound.h>
 #include <hrcontact/adaptivity/hexahedron_equilibration.h>
 #include <hrcontact/adaptivity/hexahedron_face_tractions.h>
+#include <hrcontact/adaptivity/triangle_split.h>
 #include <hrcontact/postprocess/field_values.h>
 
 #include <cmath>

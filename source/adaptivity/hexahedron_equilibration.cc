@@ -2,8 +2,6 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <hrcontact/adaptivity/hexahedron_equilibration.h>
-#include <hrcontact/discretisation/mixed_spaces.h>
-#include <hrcontact/material/material_law.h>
 
 #include <algorithm>
 #include <cmath>
@@ -71,20 +69,6 @@ namespace hrcontact
         }
     }
   } // namespace
-
-  FullMatrix<double>
-  component_compliance(const MaterialLaw<3> &law)
-  {
-    FullMatrix<double> S(6, 6);
-    for (unsigned int a = 0; a < 6; ++a)
-      {
-        const auto e =
-          law.strain(MixedSpaces<3>::stress_basis_tensor(a), Point<3>());
-        for (unsigned int b = 0; b < 6; ++b)
-          S(b, a) = MixedSpaces<3>::stress_basis_tensor(b) * e;
-      }
-    return S;
-  }
 
   void
   HexahedronEquilibration::tetrahedron_rule(const unsigned int     k,

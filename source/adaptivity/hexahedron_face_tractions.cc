@@ -5,10 +5,9 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
 
-#include <deal.II/lac/lapack_full_matrix.h>
-
 #include <hrcontact/adaptivity/face_tractions.h>
 #include <hrcontact/adaptivity/hexahedron_face_tractions.h>
+#include <hrcontact/adaptivity/vertex_problems.h>
 #include <hrcontact/postprocess/field_values.h>
 
 #include <algorithm>
@@ -22,32 +21,7 @@ namespace hrcontact
   HexahedronFaceTractions::HexahedronFaceTractions(const Results<3> &results)
     : results(results)
   {
-    // The cells whose stresses and displacements this process holds.
-    usable.assign(results.triangulation().n_active_cells(), false);
-    std::vector<types::global_dof_index> dofs;
-    const auto holds = [](const FieldVector &v, const auto &indices) {
-      for (const auto i : indices)
-        if (!v.in_local_range(i) && !v.get_partitioner()->is_ghost_entry(i))
-          return false;
-      return true;
-    };
-    for (const auto &cell :
-         results.spaces.dof_handler_stress.active_cell_iterators())
-      if (!cell->is_artificial())
-        {
-          dofs.resize(cell->get_fe().n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
-          bool ok = holds(results.stress, dofs);
-          const DoFHandler<3>::active_cell_iterator u_cell(
-            &results.triangulation(),
-            cell->level(),
-            cell->index(),
-            &results.spaces.dof_handler_displacement);
-          dofs.resize(u_cell->get_fe().n_dofs_per_cell());
-          u_cell->get_dof_indices(dofs);
-          usable[cell->active_cell_index()] =
-            ok && holds(results.displacement, dofs);
-        }
+    usable = cells_held_whole(results);
     classify_faces();
     cell_residuals();
     solve_vertex_problems();
@@ -263,33 +237,6 @@ namespace hrcontact
                 }
             }
         }
-  }
-
-  const FullMatrix<double> &
-  HexahedronFaceTractions::pseudo_inverse(const std::vector<signed char> &key)
-  {
-    auto it = inverses.find(key);
-    if (it == inverses.end())
-      {
-        const unsigned int       n = key[0], m = key[1];
-        LAPACKFullMatrix<double> pinv(n, m);
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = 0; j < m; ++j)
-            pinv(i, j) = key[2 + i * m + j];
-        pinv.compute_inverse_svd(1e-12);
-        FullMatrix<double> P(m, n);
-        Vector<double>     unit(n), column(m);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            unit    = 0;
-            unit(i) = 1;
-            pinv.vmult(column, unit);
-            for (unsigned int j = 0; j < m; ++j)
-              P(j, i) = column(j);
-          }
-        it = inverses.emplace(key, std::move(P)).first;
-      }
-    return it->second;
   }
 
   void

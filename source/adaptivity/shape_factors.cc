@@ -1,26 +1,8 @@
 #include <hrcontact/adaptivity/shape_factors.h>
+#include <hrcontact/core/blas_lapack.h>
 
 #include <algorithm>
 #include <cmath>
-
-// Reference BLAS (column-major), linked through deal.II.
-extern "C"
-{
-  void
-  dgemm_(const char   *transa,
-         const char   *transb,
-         const int    *m,
-         const int    *n,
-         const int    *k,
-         const double *alpha,
-         const double *a,
-         const int    *lda,
-         const double *b,
-         const int    *ldb,
-         const double *beta,
-         double       *c,
-         const int    *ldc);
-}
 
 namespace hrcontact
 {

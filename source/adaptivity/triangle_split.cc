@@ -24,19 +24,26 @@ namespace hrcontact
     }
   } // namespace
 
+  template <int dim>
   FullMatrix<double>
-  component_compliance(const MaterialLaw<2> &law)
+  component_compliance(const MaterialLaw<dim> &law)
   {
-    FullMatrix<double> S(3, 3);
-    for (unsigned int a = 0; a < 3; ++a)
+    constexpr unsigned int n = MixedSpaces<dim>::n_stress_components;
+    FullMatrix<double>     S(n, n);
+    for (unsigned int a = 0; a < n; ++a)
       {
         const auto e =
-          law.strain(MixedSpaces<2>::stress_basis_tensor(a), Point<2>());
-        for (unsigned int b = 0; b < 3; ++b)
-          S(b, a) = MixedSpaces<2>::stress_basis_tensor(b) * e;
+          law.strain(MixedSpaces<dim>::stress_basis_tensor(a), Point<dim>());
+        for (unsigned int b = 0; b < n; ++b)
+          S(b, a) = MixedSpaces<dim>::stress_basis_tensor(b) * e;
       }
     return S;
   }
+
+  template FullMatrix<double>
+  component_compliance(const MaterialLaw<2> &);
+  template FullMatrix<double>
+  component_compliance(const MaterialLaw<3> &);
 
   TriangleSplit::TriangleSplit(
     const Triangulation<2>::active_cell_iterator &cell)

@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <hrcontact/core/blas_lapack.h>
 #include <hrcontact/core/input.h>
 #include <hrcontact/solvers/equilibrium_reduction.h>
 
@@ -8,85 +9,6 @@
 #include <iomanip>
 #include <numeric>
 #include <sstream>
-
-// Reference BLAS/LAPACK interfaces (column-major), linked through deal.II.
-extern "C"
-{
-  void
-  dgetrf_(const int *m,
-          const int *n,
-          double    *a,
-          const int *lda,
-          int       *ipiv,
-          int       *info);
-  void
-  dtrsm_(const char   *side,
-         const char   *uplo,
-         const char   *transa,
-         const char   *diag,
-         const int    *m,
-         const int    *n,
-         const double *alpha,
-         const double *a,
-         const int    *lda,
-         double       *b,
-         const int    *ldb);
-  void
-  dtrsv_(const char   *uplo,
-         const char   *trans,
-         const char   *diag,
-         const int    *n,
-         const double *a,
-         const int    *lda,
-         double       *x,
-         const int    *incx);
-  void
-  dgemm_(const char   *transa,
-         const char   *transb,
-         const int    *m,
-         const int    *n,
-         const int    *k,
-         const double *alpha,
-         const double *a,
-         const int    *lda,
-         const double *b,
-         const int    *ldb,
-         const double *beta,
-         double       *c,
-         const int    *ldc);
-  void
-  dgemv_(const char   *trans,
-         const int    *m,
-         const int    *n,
-         const double *alpha,
-         const double *a,
-         const int    *lda,
-         const double *x,
-         const int    *incx,
-         const double *beta,
-         double       *y,
-         const int    *incy);
-  void
-  dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
-  void
-  dtrmv_(const char   *uplo,
-         const char   *trans,
-         const char   *diag,
-         const int    *n,
-         const double *a,
-         const int    *lda,
-         double       *x,
-         const int    *incx);
-  void
-  dpotrs_(const char   *uplo,
-          const int    *n,
-          const int    *nrhs,
-          const double *a,
-          const int    *lda,
-          double       *b,
-          const int    *ldb,
-          int          *info);
-}
 
 namespace hrcontact
 {

@@ -9,6 +9,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <hrcontact/adaptivity/contact_tractions.h>
+#include <hrcontact/adaptivity/vertex_problems.h>
 #include <hrcontact/core/results.h>
 
 #include <array>
@@ -22,6 +23,7 @@ namespace hrcontact
    * +-1), or -1. */
   long long
   single_dof(const EquilibriumRow &row);
+
 
   /**
    * Linear face tractions that balance every cell of a 2D conforming mesh
@@ -154,14 +156,10 @@ namespace hrcontact
     /** Per half of a refined face (by line index): the moment against the
      * hanging node's hat, by component. */
     std::map<unsigned int, std::array<double, 2>> hanging_moment;
-    /** A^+ of a vertex problem's +-1 matrix, given as its key: n, m and
-     * the n x m entries row by row. */
-    const dealii::FullMatrix<double> &
-    pseudo_inverse(const std::vector<signed char> &key);
+    /** A^+ of a vertex problem's +-1 matrix, given as its key. */
+    VertexProblemInverses pseudo_inverse;
     /** Scratch of solve_vertex(). */
     std::vector<signed char> key;
-    std::map<std::vector<signed char>, dealii::FullMatrix<double>>
-      pseudo_inverses;
   };
 } // namespace hrcontact
 

@@ -17,14 +17,6 @@
 
 namespace hrcontact
 {
-  template <int dim>
-  class MaterialLaw;
-
-  /** A law's compliance on the stress components (xx, yy, zz, xy, xz, yz),
-   * engineering shear strains: e = S s. */
-  dealii::FullMatrix<double>
-  component_compliance(const MaterialLaw<3> &law);
-
   /**
    * The 3D cell problem of the error bound (step 2 of EquilibratedStress
    * on a hexahedron): the cell split into 24 tetrahedra (its centre, the

@@ -6,6 +6,7 @@
 
 #include <deal.II/lac/full_matrix.h>
 
+#include <hrcontact/adaptivity/vertex_problems.h>
 #include <hrcontact/core/results.h>
 
 #include <array>
@@ -64,7 +65,8 @@ namespace hrcontact
     std::vector<std::array<std::array<double, 3>, 8>> cell_residual;
     std::vector<std::array<std::array<double, 3>, 4>> average;
     double                                            scale = 0;
-    std::map<std::vector<signed char>, dealii::FullMatrix<double>> inverses;
+    /** A^+ of a vertex problem's +-1 matrix, kept per sign pattern. */
+    VertexProblemInverses pseudo_inverse;
 
     dealii::Tensor<1, 3>
     data_traction(const dealii::types::boundary_id id,
@@ -81,9 +83,6 @@ namespace hrcontact
     solve_vertex(
       const unsigned int                                                 vertex,
       const std::vector<dealii::Triangulation<3>::active_cell_iterator> &cells);
-    /** A^+ of a vertex problem's +-1 matrix, kept per sign pattern. */
-    const dealii::FullMatrix<double> &
-    pseudo_inverse(const std::vector<signed char> &key);
     /** The face's coordinates (a, b) of @p x (x = p0 + a (p1 - p0) + b (p2 -
      * p0), p the face's vertices). */
     std::array<double, 2>

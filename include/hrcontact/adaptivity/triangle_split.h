@@ -17,10 +17,12 @@
 
 namespace hrcontact
 {
-  /** The compliance of a 2D law on the stress components (xx, yy, xy):
-   * tau : C^-1 tau = t^T S t. */
+  /** The compliance of a law on the stress components (MixedSpaces'
+   * order: xx, yy, xy; xx, yy, zz, xy, xz, yz), engineering shear strains:
+   * tau : C^-1 tau = t^T S t (2D and 3D). */
+  template <int dim>
   dealii::FullMatrix<double>
-  component_compliance(const MaterialLaw<2> &law);
+  component_compliance(const MaterialLaw<dim> &law);
 
   /**
    * A 2D cell split at its centre into triangles, on which the equilibrated
