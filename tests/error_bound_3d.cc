@@ -13,6 +13,8 @@
 // - What the 3D bound does not cover yet (cells that are not
 //   parallelepipeds; bound-driven cycles, which make hanging nodes) is
 //   refused by name.
+// - A prescribed displacement Q1 cannot meet between the nodes is reported
+//   (error_bound_support_mismatch) and warned about.
 
 #include <deal.II/base/mpi.h>
 
@@ -91,6 +93,36 @@ main(int argc, char **argv)
                       "yes" :
                       "NO")
                 << std::endl;
+
+  // A support Q1 cannot meet between the nodes (u_y = 1e-3 y^2 z on x = 0,
+  // where the exact u is 0: the data then belong to another problem): u_h
+  // is not kinematically admissible, and summary.txt says so.
+  {
+    std::string       text = cube(1, serial_dir);
+    const std::string from = "set Prescribed displacements = 0: 0; 0; 0";
+    text.replace(text.find(from),
+                 from.size(),
+                 "set Prescribed displacements = 0: 0; 1e-3*y^2*z; 0");
+    const auto         bad = solve_from_text<3>(text, MPI_COMM_SELF);
+    std::ostringstream bad_log;
+    bad->output_results(bad_log);
+    const auto good = solve_from_text<3>(cube(1, serial_dir), MPI_COMM_SELF);
+    good->output_results(quiet);
+    const double m_bad = bad->results().summary.get_double(
+                   "error_bound_support_mismatch"),
+                 m_good = good->results().summary.get_double(
+                   "error_bound_support_mismatch");
+    if (rank == 0)
+      std::cout << "support mismatch reported: u = 0 held: "
+                << check(m_good, 1e-14)
+                << ", u_y = 1e-3 y^2 z held: " << (m_bad > 1e-3 ? "yes" : "NO")
+                << " (above 1e-3), warned: "
+                << (bad_log.str().find("misses the prescribed displacements") !=
+                        std::string::npos ?
+                      "yes" :
+                      "NO")
+                << std::endl;
+  }
 
   // The displacement perturbed by 5 % of its largest value times a smooth
   // field that vanishes on the held face x = 0: still kinematically

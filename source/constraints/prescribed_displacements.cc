@@ -3,6 +3,7 @@
 #include <hrcontact/constraints/prescribed_displacements.h>
 
 #include <cmath>
+#include <limits>
 
 namespace hrcontact
 {
@@ -78,6 +79,20 @@ namespace hrcontact
       }
     prm.leave_subsection();
     return !prescriptions.empty();
+  }
+
+  template <int dim>
+  double
+  PrescribedDisplacements<dim>::prescribed_value(const types::boundary_id id,
+                                                 const unsigned int       d,
+                                                 const Point<dim> &x) const
+  {
+    const auto it = prescriptions.find(id);
+    if (it != prescriptions.end())
+      for (unsigned int k = 0; k < it->second.components.size(); ++k)
+        if (it->second.components[k] == d)
+          return it->second.values->value(x, k);
+    return std::numeric_limits<double>::quiet_NaN();
   }
 
   template <int dim>

@@ -2,6 +2,7 @@
 
 #include <hrcontact/adaptivity/cell_equilibration.h>
 #include <hrcontact/adaptivity/equilibrated_stress.h>
+#include <hrcontact/adaptivity/support_mismatch.h>
 #include <hrcontact/postprocess/error_bound.h>
 #include <hrcontact/postprocess/field_values.h>
 
@@ -78,6 +79,9 @@ namespace hrcontact
     summary.add("error_bound_traction_residual", tau.traction_residual);
     summary.add("error_bound_equilibrium_residual", tau.cell_residual);
     summary.add("error_bound_seconds", seconds);
+    // u_h must meet the prescribed displacements between the nodes too.
+    const double mismatch = support_mismatch(results);
+    summary.add("error_bound_support_mismatch", mismatch);
     if (!results.system.contact_rows.empty())
       {
         // The contact term's share of eta^2, and the lift that makes u_h
@@ -100,6 +104,13 @@ namespace hrcontact
                << std::setprecision(2)
                << std::max(tau.traction_residual, tau.cell_residual) << ", "
                << std::setprecision(3) << seconds << " s\n";
+    if (mismatch > 1e-8)
+      output.log << "  warning: u_h misses the prescribed displacements "
+                    "between the nodes by "
+                 << std::setprecision(2) << mismatch
+                 << " of its largest value (Q1 meets only values linear "
+                    "along each face): the bound leaves that interpolation "
+                    "error out and is not guaranteed\n";
     if (reference_stress)
       {
         const auto   c = tau.compare(*reference_stress);

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -169,6 +170,23 @@ namespace hrcontact
     holds_pointwise_from_nodes() const
     {
       return !is_normal_kind();
+    }
+
+    /**
+     * The value this kind prescribes for displacement component @p d at
+     * @p x of its boundary @p id, or NaN where it prescribes none: what
+     * u_h must meet between the nodes too for the error bound to be
+     * guaranteed (SupportMismatch).
+     */
+    virtual double
+    prescribed_value(const dealii::types::boundary_id id,
+                     const unsigned int               d,
+                     const dealii::Point<dim>        &x) const
+    {
+      (void)id;
+      (void)d;
+      (void)x;
+      return std::numeric_limits<double>::quiet_NaN();
     }
 
     /**

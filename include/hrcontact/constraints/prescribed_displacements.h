@@ -34,6 +34,10 @@ namespace hrcontact
     boundary_ids() const override;
     bool
     is_normal_kind() const override;
+    double
+    prescribed_value(const dealii::types::boundary_id id,
+                     const unsigned int               d,
+                     const dealii::Point<dim>        &x) const override;
     void
     collect(const BoundaryFace<dim> &face,
             const EquilibriumSystem &system,
