@@ -119,30 +119,6 @@ namespace hrcontact
   }
 
   Tensor<1, 2>
-  FaceTractions::data_traction(const types::boundary_id id,
-                               const Point<2>          &x,
-                               const Tensor<1, 2>      &normal) const
-  {
-    const Scene<2> &scene = results.scene;
-    Tensor<1, 2>    t;
-    Vector<double>  v(2);
-    if (const auto it = scene.tractions.find(id); it != scene.tractions.end())
-      {
-        it->second->vector_value(x, v);
-        for (unsigned int d = 0; d < 2; ++d)
-          t[d] += v[d];
-      }
-    if (const auto it = scene.projected_pressures.find(id);
-        it != scene.projected_pressures.end())
-      {
-        it->second->vector_value(x, v);
-        for (unsigned int d = 0; d < 2; ++d)
-          t[d] -= v[d] * normal[d];
-      }
-    return t;
-  }
-
-  Tensor<1, 2>
   FaceTractions::traction(const unsigned int  face,
                           const unsigned int  cell,
                           const Point<2>     &x,
@@ -156,7 +132,7 @@ namespace hrcontact
                           (v[f.vertices[1]] - v[f.vertices[0]]).norm_square();
     Tensor<1, 2> data;
     if (f.known[0] || f.known[1])
-      data = data_traction(f.boundary_id, x, normal);
+      data = data_traction(results.scene, f.boundary_id, x, normal);
     Tensor<1, 2> t;
     const double legendre = 6 * lambda * lambda - 6 * lambda + 1;
     for (unsigned int i = 0; i < 2; ++i)
@@ -295,7 +271,7 @@ namespace hrcontact
                 const std::array<double, 2> hat{{1 - lambda, lambda}};
                 const Tensor<1, 2>          data =
                   face_data.boundary ?
-                             data_traction(face_data.boundary_id, x, n) :
+                             data_traction(results.scene, face_data.boundary_id, x, n) :
                              Tensor<1, 2>();
                 for (unsigned int fa = 0; fa < 2; ++fa)
                   {

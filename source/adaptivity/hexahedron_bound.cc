@@ -251,8 +251,10 @@ namespace hrcontact
     const auto        &law = results.scene.material_of(cells[0]->material_id());
     FullMatrix<double> S   = component_compliance(law), C(6, 6);
     C.invert(S);
-    CellFields fields;
-    Cell       cell;
+    // Each cell's fields, sampled once; the callbacks read the current one.
+    std::vector<CellFields> sampled(cells.size());
+    const CellFields       *fields = nullptr;
+    Cell                    cell;
     const auto traction = [&](const unsigned int f, const Point<3> &x) {
       const auto   face = cell->face(f);
       Tensor<1, 3> n    = cross_product_3d(face->vertex(1) - face->vertex(0),
@@ -271,7 +273,7 @@ namespace hrcontact
     };
     // C eps(u_h): C on the components, engineering shear strains.
     const auto target = [&](const Point<3> &x) {
-      const auto   e     = fields.strain(x);
+      const auto   e     = fields->strain(x);
       const double ev[6] = {
         e[0][0], e[1][1], e[2][2], 2 * e[0][1], 2 * e[0][2], 2 * e[1][2]};
       double c[6] = {0, 0, 0, 0, 0, 0};
@@ -296,7 +298,8 @@ namespace hrcontact
     for (unsigned int i = 0; i < cells.size(); ++i)
       {
         cell = cells[i];
-        sample(cell, fields);
+        sample(cell, sampled[i]);
+        fields = &sampled[i];
         eq.data(vertices_of(cell), traction, force, target, data[i]);
         batch.push_back(&data[i]);
       }
@@ -309,7 +312,6 @@ namespace hrcontact
       {
         cell                     = cells[i];
         const unsigned int index = cell->active_cell_index();
-        sample(cell, fields);
         eq.set_cell(vertices_of(cell));
         coefficients[index]  = x[i];
         bound_squared[index] = eq.distance(x[i], data[i].targets);
@@ -324,7 +326,7 @@ namespace hrcontact
             eq.tetrahedron_rule(k, points, weights);
             for (unsigned int q = 0; q < points.size(); ++q)
               solution_energy +=
-                weights[q] * energy(S, fields.stress(points[q]));
+                weights[q] * energy(S, sampled[i].stress(points[q]));
           }
       }
   }

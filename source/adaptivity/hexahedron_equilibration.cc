@@ -31,15 +31,6 @@ namespace hrcontact
       return e;
     }
 
-    double
-    power(const double x, const unsigned int n)
-    {
-      double r = 1;
-      for (unsigned int i = 0; i < n; ++i)
-        r *= x;
-      return r;
-    }
-
     /** A rule on the triangle or tetrahedron of @p corners (real points and
      * weights), from Witherden-Vincent's rule exact to degree 2n - 1. */
     template <int dim>
@@ -67,6 +58,16 @@ namespace hrcontact
           points.push_back(x);
           weights.push_back(rule.weight(q) * jacobian);
         }
+    }
+
+    /** The unit normal of a triangle pointing away from @p inside. */
+    Tensor<1, 3>
+    unit_normal(const std::array<Point<3>, 3> &tri, const Point<3> &inside)
+    {
+      Tensor<1, 3> n = cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
+      if (n * (tri[0] - inside) < 0)
+        n = -n;
+      return n / n.norm();
     }
   } // namespace
 
@@ -106,6 +107,8 @@ namespace hrcontact
     , monomials(exponents(degree))
     , lower(exponents(degree - 1))
   {
+    static_assert(degree == 2,
+                  "the monomials' values are kept in arrays of 10 and 4");
     // Per face, its four edges in cyclic order (deal.II's face vertices
     // 0, 1, 3, 2), each with the face centre and the cell centre.
     unsigned int k = 0;
@@ -143,14 +146,6 @@ namespace hrcontact
     AssertDimension(inner.size(), 36);
   }
 
-  double
-  HexahedronEquilibration::monomial(const std::array<unsigned int, 3> &e,
-                                    const Point<3>                    &x) const
-  {
-    const Tensor<1, 3> xi = (x - geometry.P[14]) / geometry.h;
-    return power(xi[0], e[0]) * power(xi[1], e[1]) * power(xi[2], e[2]);
-  }
-
   Tensor<1, 3>
   HexahedronEquilibration::monomial_gradient(
     const std::array<unsigned int, 3> &e,
@@ -163,7 +158,7 @@ namespace hrcontact
         {
           g[d] = e[d] / geometry.h;
           for (unsigned int i = 0; i < 3; ++i)
-            g[d] *= power(xi[i], i == d ? e[i] - 1 : e[i]);
+            g[d] *= std::pow(xi[i], int(i == d ? e[i] - 1 : e[i]));
         }
     return g;
   }
@@ -221,20 +216,19 @@ namespace hrcontact
     // div tau + f = 0 against the linear polynomials on each tetrahedron.
     for (unsigned int k = 0; k < n_tetrahedra; ++k, r += 3 * n_l)
       {
-        std::array<Point<3>, 4> corners;
-        for (unsigned int i = 0; i < 4; ++i)
-          corners[i] = geometry.P[tets[k][i]];
         // No body force: these rows' data are zero.
         if (!A && !body_force)
           continue;
-        simplex_rule<3>(corners, 3, points, weights);
+        tetrahedron_rule(k, points, weights);
         for (unsigned int q = 0; q < points.size(); ++q)
           {
             const Tensor<1, 3> f =
               body_force ? body_force(points[q]) : Tensor<1, 3>();
+            double lower_values[4];
+            monomial_values(points[q], lower, lower_values);
             for (unsigned int l = 0; l < n_l; ++l)
               {
-                const double t = weights[q] * monomial(lower[l], points[q]);
+                const double t = weights[q] * lower_values[l];
                 for (unsigned int i = 0; i < 3; ++i)
                   c(r + i * n_l + l) -= t * f[i];
                 if (A)
@@ -271,6 +265,9 @@ namespace hrcontact
           const double       test[6] = {1, s, t, s * s, s * t, t * t};
           const Tensor<1, 3> data =
             face >= 0 ? traction(face, points[q]) : Tensor<1, 3>();
+          double values[10];
+          if (A)
+            monomial_values(points[q], monomials, values);
           for (unsigned int j = 0; j < n_t; ++j)
             {
               const double w = weights[q] * test[j];
@@ -279,7 +276,7 @@ namespace hrcontact
               if (A)
                 for (unsigned int m = 0; m < monomials.size(); ++m)
                   {
-                    const double v = w * monomial(monomials[m], points[q]);
+                    const double v = w * values[m];
                     for (unsigned int i = 0; i < 3; ++i)
                       for (unsigned int jj = 0; jj < 3; ++jj)
                         {
@@ -300,10 +297,8 @@ namespace hrcontact
         const std::array<Point<3>, 3> tri = {{geometry.P[tets[k][1]],
                                               geometry.P[tets[k][2]],
                                               geometry.P[tets[k][3]]}};
-        Tensor<1, 3> n = cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
-        if (n * (tri[0] - geometry.P[14]) < 0)
-          n = -n;
-        triangle_rows(tri, n / n.norm(), k, -1, face_of_tet[k]);
+        triangle_rows(
+          tri, unit_normal(tri, geometry.P[14]), k, -1, face_of_tet[k]);
       }
     // The inner rows' data are zero: only their matrix needs the rules.
     if (!A)
@@ -314,14 +309,11 @@ namespace hrcontact
           const std::array<Point<3>, 3> tri = {{geometry.P[f.points[0]],
                                                 geometry.P[f.points[1]],
                                                 geometry.P[f.points[2]]}};
-          Tensor<1, 3> n = cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
           // From tetrahedron a to b: away from a's centroid.
           Point<3> centroid_a;
           for (unsigned int i = 0; i < 4; ++i)
             centroid_a += geometry.P[tets[f.a][i]] / 4.;
-          if (n * (tri[0] - centroid_a) < 0)
-            n = -n;
-          triangle_rows(tri, n / n.norm(), f.a, f.b, -1);
+          triangle_rows(tri, unit_normal(tri, centroid_a), f.a, f.b, -1);
         }
     AssertDimension(r, n_rows);
   }
@@ -343,12 +335,9 @@ namespace hrcontact
     std::vector<double>   values(n_m);
     for (unsigned int k = 0; k < n_tetrahedra; ++k)
       {
-        std::array<Point<3>, 4> corners;
-        for (unsigned int i = 0; i < 4; ++i)
-          corners[i] = geometry.P[tets[k][i]];
         // Exact for degree 5: the energy's 4, and eps(u_h) of a
         // parallelepiped (degree 2) against the quadratics.
-        simplex_rule<3>(corners, 3, points, weights);
+        tetrahedron_rule(k, points, weights);
         for (unsigned int q = 0; q < points.size(); ++q)
           {
             monomial_values(points[q], monomials, values.data());
@@ -386,10 +375,7 @@ namespace hrcontact
     double                sum = 0;
     for (unsigned int k = 0; k < n_tetrahedra; ++k)
       {
-        std::array<Point<3>, 4> corners;
-        for (unsigned int i = 0; i < 4; ++i)
-          corners[i] = geometry.P[tets[k][i]];
-        simplex_rule<3>(corners, 3, points, weights);
+        tetrahedron_rule(k, points, weights);
         for (unsigned int q = 0; q < points.size(); ++q)
           {
             const SymmetricTensor<2, 3> d =

@@ -84,30 +84,6 @@ namespace hrcontact
         }
   }
 
-  Tensor<1, 3>
-  HexahedronFaceTractions::data_traction(const types::boundary_id id,
-                                         const Point<3>          &x,
-                                         const Tensor<1, 3>      &normal) const
-  {
-    const Scene<3> &scene = results.scene;
-    Tensor<1, 3>    t;
-    Vector<double>  v(3);
-    if (const auto it = scene.tractions.find(id); it != scene.tractions.end())
-      {
-        it->second->vector_value(x, v);
-        for (unsigned int d = 0; d < 3; ++d)
-          t[d] += v[d];
-      }
-    if (const auto it = scene.projected_pressures.find(id);
-        it != scene.projected_pressures.end())
-      {
-        it->second->vector_value(x, v);
-        for (unsigned int d = 0; d < 3; ++d)
-          t[d] -= v[d] * normal[d];
-      }
-    return t;
-  }
-
   std::array<double, 2>
   HexahedronFaceTractions::face_coordinates(const Face     &face,
                                             const Point<3> &x) const
@@ -132,7 +108,7 @@ namespace hrcontact
     const double sign = (f.owner == cell) ? 1. : -1.;
     Tensor<1, 3> data;
     if (f.known[0] || f.known[1] || f.known[2])
-      data = data_traction(f.boundary_id, x, normal);
+      data = data_traction(results.scene, f.boundary_id, x, normal);
     const auto [a, b]   = face_coordinates(f, x);
     const double hat[4] = {(1 - a) * (1 - b), a * (1 - b), (1 - a) * b, a * b};
     Tensor<1, 3> t;
@@ -218,15 +194,19 @@ namespace hrcontact
                   const Tensor<1, 3> n  = hf.normal_vector(q);
                   const Tensor<1, 3> sn = stress_tensor<3>(s_face[q]) * n;
                   const Tensor<1, 3> data =
-                    face.boundary ? data_traction(face.boundary_id,
+                    face.boundary ? data_traction(results.scene,
+                                                  face.boundary_id,
                                                   hf.quadrature_point(q),
                                                   n) :
                                     Tensor<1, 3>();
                   for (unsigned int j = 0; j < 4; ++j)
                     {
-                      const unsigned int v =
-                        GeometryInfo<3>::face_to_cell_vertices(fn, j);
-                      AssertDimension(cell->vertex_index(v), face.vertices[j]);
+                      // The cell's vertex at the face's slot j, by global
+                      // index: a face seen from its other side may be
+                      // oriented otherwise.
+                      unsigned int v = 0;
+                      while (cell->vertex_index(v) != face.vertices[j])
+                        ++v;
                       const double phi = hf.shape_value(v, q) * hf.JxW(q);
                       for (unsigned int c = 0; c < 3; ++c)
                         if (face.known[c])

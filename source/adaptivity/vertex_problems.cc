@@ -38,6 +38,42 @@ namespace hrcontact
     return usable;
   }
 
+  template <int dim>
+  Tensor<1, dim>
+  data_traction(const Scene<dim>        &scene,
+                const types::boundary_id id,
+                const Point<dim>        &x,
+                const Tensor<1, dim>    &normal)
+  {
+    Tensor<1, dim> t;
+    Vector<double> v(dim);
+    if (const auto it = scene.tractions.find(id); it != scene.tractions.end())
+      {
+        it->second->vector_value(x, v);
+        for (unsigned int d = 0; d < dim; ++d)
+          t[d] += v[d];
+      }
+    if (const auto it = scene.projected_pressures.find(id);
+        it != scene.projected_pressures.end())
+      {
+        it->second->vector_value(x, v);
+        for (unsigned int d = 0; d < dim; ++d)
+          t[d] -= v[d] * normal[d];
+      }
+    return t;
+  }
+
+  template Tensor<1, 2>
+  data_traction(const Scene<2> &,
+                const types::boundary_id,
+                const Point<2> &,
+                const Tensor<1, 2> &);
+  template Tensor<1, 3>
+  data_traction(const Scene<3> &,
+                const types::boundary_id,
+                const Point<3> &,
+                const Tensor<1, 3> &);
+
   template std::vector<bool>
   cells_held_whole(const Results<2> &);
   template std::vector<bool>

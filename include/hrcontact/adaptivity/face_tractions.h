@@ -90,13 +90,6 @@ namespace hrcontact
              const dealii::Point<2>     &x,
              const dealii::Tensor<1, 2> &normal) const;
 
-    /** The data traction of boundary @p id at @p x (Loads/Tractions and
-     * Projected pressures). */
-    dealii::Tensor<1, 2>
-    data_traction(const dealii::types::boundary_id id,
-                  const dealii::Point<2>          &x,
-                  const dealii::Tensor<1, 2>      &normal) const;
-
     /** The largest residual of the vertex problems, relative to the
      * largest cell residual R_K: round-off when the HR equations hold. */
     double residual = 0;

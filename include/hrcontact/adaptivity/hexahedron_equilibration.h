@@ -154,9 +154,6 @@ namespace hrcontact
       return (k * 6 + c) * monomials.size() + m;
     }
     std::vector<std::array<unsigned int, 3>> monomials, lower;
-    double
-    monomial(const std::array<unsigned int, 3> &e,
-             const dealii::Point<3>            &x) const;
     dealii::Tensor<1, 3>
     monomial_gradient(const std::array<unsigned int, 3> &e,
                       const dealii::Point<3>            &x) const;

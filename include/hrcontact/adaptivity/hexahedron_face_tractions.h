@@ -68,10 +68,6 @@ namespace hrcontact
     /** A^+ of a vertex problem's +-1 matrix, kept per sign pattern. */
     VertexProblemInverses pseudo_inverse;
 
-    dealii::Tensor<1, 3>
-    data_traction(const dealii::types::boundary_id id,
-                  const dealii::Point<3>          &x,
-                  const dealii::Tensor<1, 3>      &normal) const;
     void
     classify_faces();
     /** R_K, the loaded faces' data moments and the averaged sigma_h n. */

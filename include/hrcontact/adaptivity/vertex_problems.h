@@ -18,6 +18,16 @@ namespace hrcontact
   std::vector<bool>
   cells_held_whole(const Results<dim> &results);
 
+  /** The data traction of boundary @p id at @p x with outward normal
+   * @p normal: Loads/Tractions and Projected pressures (2D and 3D face
+   * tractions alike). */
+  template <int dim>
+  dealii::Tensor<1, dim>
+  data_traction(const Scene<dim>                &scene,
+                const dealii::types::boundary_id id,
+                const dealii::Point<dim>        &x,
+                const dealii::Tensor<1, dim>    &normal);
+
   /**
    * The pseudo-inverses of the vertex problems' +-1 matrices (a face's
    * owner +1, its other side -1), kept per sign pattern: most vertices of a
