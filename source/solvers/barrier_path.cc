@@ -20,6 +20,16 @@ namespace hrcontact
       "(s the largest stress of the elastic step). Larger starts further "
       "inside the cone.");
     prm.declare_entry(
+      "Carried initial barrier",
+      "1e-4",
+      Patterns::Double(0),
+      "interior point, Nested iteration: a finer level starts from the "
+      "coarser level's answer at Final barrier; where that start is far "
+      "off (its first Newton step misses the law by 100 times the largest "
+      "stress: cracks that moved), it starts over from the coarser level's "
+      "strains at this barrier (units as Initial barrier) and follows the "
+      "path from there.");
+    prm.declare_entry(
       "Barrier reduction",
       "0.1",
       Patterns::Double(0, 1),
@@ -66,6 +76,7 @@ namespace hrcontact
   {
     prm.enter_subsection("Stress constraint iteration");
     initial_barrier    = prm.get_double("Initial barrier");
+    carried_barrier    = prm.get_double("Carried initial barrier");
     reduction          = prm.get_double("Barrier reduction");
     final_barrier      = prm.get_double("Final barrier");
     stage_tolerance    = prm.get_double("Stage tolerance");
@@ -84,10 +95,10 @@ namespace hrcontact
   BarrierPath::run(const std::function<void(double)>               &set_barrier,
                    const std::function<unsigned int(const double)> &solve_stage,
                    const double  stress_tolerance,
-                   const bool    carried,
+                   const double  first,
                    std::ostream &log)
   {
-    double t = carried ? final_barrier : initial_barrier;
+    double t = std::max(final_barrier, first);
     while (true)
       {
         const bool last = t <= final_barrier * (1 + 1e-12);

@@ -3,6 +3,7 @@
 #include <hrcontact/solvers/row_relinearisation.h>
 
 #include <numeric>
+#include <optional>
 #include <set>
 
 namespace hrcontact
@@ -117,11 +118,16 @@ namespace hrcontact
     // previous step's multipliers, compliances and reactions, so that the
     // later steps take one or two updates. When the stresses stop changing,
     // the law and the contact conditions hold together.
-    bool first         = true;
-    auto contact_solve = [&]() {
-      if (!first && contact_solver.carries_state())
+    bool first = true, repeat = false;
+    // The start of the last solve, for a material step taken back.
+    std::optional<ContactStart> last_start;
+    auto                        contact_solve = [&]() {
+      if (repeat && last_start)
+        contact_solver.start_from(*last_start);
+      else if (!first && contact_solver.carries_state())
         contact_solver.start_from_result("the last material step's state");
-      first = false;
+      last_start = contact_solver.pending_start();
+      first = repeat = false;
       if (relinearisations.empty())
         contact_solver.solve(system, path, load_scale, log);
       else
@@ -135,8 +141,10 @@ namespace hrcontact
           ": the contact iteration did not converge: " +
           contact_solver.outcome_message(r.free_rigid_motions));
     };
+    material_loop.take_back_last_solve = [&]() { repeat = true; };
     material_loop.run(system, path, contact_solve, r, log);
-    r.contact = &contact_solver.result();
+    material_loop.take_back_last_solve = nullptr;
+    r.contact                          = &contact_solver.result();
     // After the last multiplier update mu = w_n - g (pressed: mu = 0).
     r.reactions.contact_w = system.contact_row_values();
     for (unsigned int k = 0; k < r.reactions.contact_w.size(); ++k)

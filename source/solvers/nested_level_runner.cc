@@ -233,16 +233,37 @@ namespace hrcontact
                                                        compliance_scale,
                                                        !finest_level));
     if (carries_point_strains)
-      {
-        FieldVector &start = r.stress_constraint.start_point_strains;
-        reinit_field(start, r.spaces.stress_unknowns());
-        prolongate_to_finer_mesh(c.spaces.stress_unknowns(),
-                                 c.stress_constraint.point_strains,
-                                 r.spaces.stress_unknowns(),
-                                 start);
-      }
+      carry_point_strains(c, r);
     linear_solver.starts_from_coarser_level = true;
     start_displacements(c, path, linear_solver, r, coarse_start);
+  }
+
+  template <int dim>
+  void
+  NestedLevelRunner<dim>::carry_point_strains(const Results<dim> &c,
+                                              Results<dim>       &r) const
+  {
+    // The answer, the interior point's strains at Carried initial barrier
+    // (a start over, MaterialLoop::run_barrier_path) and the scales.
+    r.stress_constraint.elastic_stress = c.stress_constraint.elastic_stress;
+    r.stress_constraint.elastic_strain = c.stress_constraint.elastic_strain;
+    FieldVector &start = r.stress_constraint.start_point_strains;
+    reinit_field(start, r.spaces.stress_unknowns());
+    prolongate_to_finer_mesh(c.spaces.stress_unknowns(),
+                             c.stress_constraint.point_strains,
+                             r.spaces.stress_unknowns(),
+                             start);
+    const FieldVector &path       = c.stress_constraint.carried_point_strains;
+    FieldVector       &path_start = r.stress_constraint.start_path_strains;
+    path_start.reinit(0);
+    if (path.size() > 0)
+      {
+        reinit_field(path_start, r.spaces.stress_unknowns());
+        prolongate_to_finer_mesh(c.spaces.stress_unknowns(),
+                                 path,
+                                 r.spaces.stress_unknowns(),
+                                 path_start);
+      }
   }
 
   template <int dim>

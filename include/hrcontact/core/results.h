@@ -197,6 +197,15 @@ namespace hrcontact
        * stress unknowns' DGQ1 space), and the ones its iteration starts
        * from (a coarser level's, prolongated; empty: the elastic step). */
       FieldVector point_strains, start_point_strains;
+      /** The interior point's strains at the end of the stage of Carried
+       * initial barrier (BarrierPath), and the coarser level's, which a
+       * finer level starts over from where the carried answer is far off
+       * (empty: none). */
+      FieldVector carried_point_strains, start_path_strains;
+      /** The largest stress and strain of the elastic step, which scale the
+       * barrier and the growth test; a finer level keeps its coarser
+       * level's (0: from this level's first solve). */
+      double elastic_stress = 0, elastic_strain = 0;
       /** The Gauss-point method that solved it ("closed-form projection"
        * or "interior point"); empty for the augmented Lagrangian. */
       std::string gauss_point_method;

@@ -26,6 +26,15 @@ namespace hrcontact
   void
   reinit_field(FieldVector &v, const dealii::DoFHandler<dim> &dof_handler);
 
+  /** @p to becomes a copy of @p from: its layout, owned values and ghosts. */
+  inline void
+  copy_field(const FieldVector &from, FieldVector &to)
+  {
+    to.reinit(from, true);
+    to.copy_locally_owned_data_from(from);
+    to.update_ghost_values();
+  }
+
   /** Whether the entries of v are finite on every process (collective):
    * a diverged solve is stopped before any result file is written. */
   bool

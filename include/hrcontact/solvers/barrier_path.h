@@ -37,17 +37,19 @@ namespace hrcontact
     /**
      * The stages: set_barrier(t) relinearises at the current strains with
      * tau = t s^2 / E, solve_stage(tolerance) runs Newton's method to that
-     * model stress error and returns its steps. A start @p carried from a
-     * coarser level's strains runs the last stage only.
+     * model stress error and returns its steps. The stages run from t =
+     * @p first (a carried level: Final barrier or Carried initial barrier).
      */
     void
     run(const std::function<void(double)>               &set_barrier,
         const std::function<unsigned int(const double)> &solve_stage,
         const double                                     stress_tolerance,
-        const bool                                       carried,
+        const double                                     first,
         std::ostream                                    &log);
 
     double initial_barrier = 1e-2;
+    /** Where a carried level's path starts over from a rejected start. */
+    double carried_barrier = 1e-4;
     double reduction       = 0.1;
     double final_barrier   = 1e-8;
     /** Intermediate stages stop at this model stress error (relative). */

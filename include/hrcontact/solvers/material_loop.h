@@ -71,6 +71,11 @@ namespace hrcontact
      * the displacement-code comparison stops where it stops). */
     MaterialIteration material_iteration;
 
+    /** Set by a caller whose solves carry a state (the contact iteration):
+     * the next solve starts as the last one did, which is taken back (a
+     * rejected carried start, run_barrier_path). */
+    std::function<void()> take_back_last_solve;
+
   private:
     /** One material Newton iteration; its steps and changes added to
      * results (several per run under a stress constraint). */
@@ -114,7 +119,7 @@ namespace hrcontact
     run_barrier_path(const MaterialIteration::Operations &operations,
                      FieldVector                         &state,
                      const double                        &elastic_stress,
-                     const double                        &growth,
+                     double                              &growth,
                      const double                         stress_tolerance,
                      const bool                           carried,
                      Results<dim>                        &results,

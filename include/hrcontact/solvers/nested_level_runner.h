@@ -86,6 +86,12 @@ namespace hrcontact
     bool carries_point_strains = false;
 
   private:
+    /** The coarser level @p coarse's point strains and barrier scales,
+     * prolongated to @p results' mesh as its start. */
+    void
+    carry_point_strains(const Results<dim> &coarse,
+                        Results<dim>       &results) const;
+
     /** Whether the coarser levels' states apply to this run at all: a
      * contact state (carries_state) or the point strains. */
     bool

@@ -16,6 +16,7 @@
 #include <hrcontact/solvers/row_relinearisation.h>
 
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -105,6 +106,13 @@ namespace hrcontact
      */
     void
     start_from(const ContactStart &start);
+
+    /** The start the next solve takes (start_from), if one is pending. */
+    std::optional<ContactStart>
+    pending_start() const
+    {
+      return has_start ? std::optional<ContactStart>(start) : std::nullopt;
+    }
 
     /** Start the next solve from the last solve's multipliers, penalties,
      * reactions and force scale (a material Newton step's contact solve). */
