@@ -439,7 +439,8 @@ namespace hrcontact
         takes_snapshot                        = true;
         if (material_iteration.start_rejected())
           {
-            growth = growth_before;
+            growth                                     = growth_before;
+            r.stress_constraint.carried_start_rejected = true;
             if (take_back_last_solve)
               take_back_last_solve();
             copy_field(path_start, last);

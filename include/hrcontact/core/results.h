@@ -202,6 +202,9 @@ namespace hrcontact
        * finer level starts over from where the carried answer is far off
        * (empty: none). */
       FieldVector carried_point_strains, start_path_strains;
+      /** Whether this level's carried start was rejected (far off the
+       * finer path) and the path followed from start_path_strains. */
+      bool carried_start_rejected = false;
       /** The largest stress and strain of the elastic step, which scale the
        * barrier and the growth test; a finer level keeps its coarser
        * level's (0: from this level's first solve). */
