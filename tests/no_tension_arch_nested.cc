@@ -1,14 +1,15 @@
 // Nested iteration for the interior point (issue 54): the shipped masonry
 // arch (parameters/masonry-arch.prm, its point load moving the hinges
 // between meshes) at 3,072 cells, from the elastic step and from two coarser
-// levels. A carried start whose first Newton step misses the law by far
-// (the coarser hinges, prolongated) must be rejected and the level must
+// levels. A carried start whose first step (one step of the closed-form
+// projection from the coarser answer) misses the law by far (the coarser
+// hinges, prolongated) must be rejected and the level must
 // follow the barrier path from the coarser level's strains at Carried
 // initial barrier; the finest level must then take fewer steps than alone,
 // both runs must reach the same stresses, and no Gauss point may carry
 // tension. Then the same with Carried initial barrier = Final barrier: a
-// rejected start has no path to follow but from the last stage, and the run
-// must still converge (only slower).
+// rejected start has no point on the path to start over from but the
+// coarser answer itself, and the run must still converge (only slower).
 
 #include "tests.h"
 

@@ -126,7 +126,6 @@ namespace hrcontact
     changes.clear();
     steps            = 0;
     roundoff_limited = false;
-    rejected         = false;
     FieldVector previous, current;
     bool        has_previous = operations.start != nullptr;
     if (has_previous)
@@ -157,15 +156,6 @@ namespace hrcontact
                 << std::endl;
             if (change <= relative_tolerance)
               return;
-            if (start_change_limit > 0 && changes.size() == 1 &&
-                change > start_change_limit)
-              {
-                rejected = true;
-                log << "  material iteration: the start is far off (first "
-                    << state_name << " change above " << start_change_limit
-                    << "); rejected" << std::endl;
-                return;
-              }
             // Round-off of the path (the dense null-space reduction with stiff
             // contact rows: about 5e-10 on lift-off) can sit above a tight
             // tolerance. Three changes in a row that are tiny and no longer

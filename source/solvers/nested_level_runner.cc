@@ -244,9 +244,8 @@ namespace hrcontact
                                               Results<dim>       &r) const
   {
     // The answer, the interior point's strains at Carried initial barrier
-    // (a start over, MaterialLoop::run_barrier_path) and the scales.
+    // (a start over, MaterialLoop::run_barrier_path) and the stress scale.
     r.stress_constraint.elastic_stress = c.stress_constraint.elastic_stress;
-    r.stress_constraint.elastic_strain = c.stress_constraint.elastic_strain;
     FieldVector &start = r.stress_constraint.start_point_strains;
     reinit_field(start, r.spaces.stress_unknowns());
     prolongate_to_finer_mesh(c.spaces.stress_unknowns(),

@@ -205,10 +205,10 @@ namespace hrcontact
       /** Whether this level's carried start was rejected (far off the
        * finer path) and the path followed from start_path_strains. */
       bool carried_start_rejected = false;
-      /** The largest stress and strain of the elastic step, which scale the
-       * barrier and the growth test; a finer level keeps its coarser
-       * level's (0: from this level's first solve). */
-      double elastic_stress = 0, elastic_strain = 0;
+      /** The largest stress of the elastic step, the barrier's scale; a
+       * finer level keeps its coarser level's (0: from this level's first
+       * solve). */
+      double elastic_stress = 0;
       /** The Gauss-point method that solved it ("closed-form projection"
        * or "interior point"); empty for the augmented Lagrangian. */
       std::string gauss_point_method;

@@ -131,16 +131,6 @@ namespace hrcontact
     /** Changes below this that stop falling are round-off (see above). */
     double       roundoff_ceiling = 1e-8;
     unsigned int maximum_steps    = 100;
-    /** A start (Operations::start) whose first change exceeds this is
-     * rejected, solve() returning at once (0: never). */
-    double start_change_limit = 0;
-
-    /** Whether solve() rejected its start (start_change_limit). */
-    bool
-    start_rejected() const
-    {
-      return rejected;
-    }
 
   private:
     /** Damps the step from previous to current by the exact line search
@@ -154,7 +144,6 @@ namespace hrcontact
     std::vector<double> changes;
     unsigned int        steps            = 0;
     bool                roundoff_limited = false;
-    bool                rejected         = false;
   };
 } // namespace hrcontact
 

@@ -140,7 +140,7 @@ namespace hrcontact
       same_pieces &= (state.pieces[i].branch == solved[i].branch);
     same_pieces = ownership.all(same_pieces);
     return pure_penalty ? (update > 1 && last_inner_exact) :
-                          (norm < state.tolerance_used &&
+                          (norm <= state.tolerance_used &&
                            (!diagonal || same_pieces) && !geometry_changed);
   }
 
