@@ -109,7 +109,9 @@ namespace hrcontact
     /**
      * run_projected's iteration for Method = interior point: the elastic
      * step (or one from a coarser level's strains, @p carried) sets the
-     * scale @p elastic_stress, then BarrierPath's stages, each Newton's
+     * scale @p elastic_stress (its largest stress @p first_stress; the
+     * coarser level's if a carried start is rejected), then BarrierPath's
+     * stages, each Newton's
      * method from the last one's strains, the last one to
      * @p stress_tolerance. A stage that fails after the strains grew
      * (@p growth, the largest over the elastic step's) beyond 1e5 is
@@ -118,7 +120,8 @@ namespace hrcontact
     void
     run_barrier_path(const MaterialIteration::Operations &operations,
                      FieldVector                         &state,
-                     const double                        &elastic_stress,
+                     double                              &elastic_stress,
+                     const double                        &first_stress,
                      double                              &growth,
                      const double                         stress_tolerance,
                      const bool                           carried,
