@@ -23,12 +23,13 @@ namespace hrcontact
       "Carried initial barrier",
       "1e-4",
       Patterns::Double(0),
-      "interior point, Nested iteration: a finer level starts from the "
-      "coarser level's answer at Final barrier; where that start is far "
-      "off (its first Newton step misses the law by 100 times the largest "
-      "stress: cracks that moved), it starts over from the coarser level's "
-      "strains at this barrier (units as Initial barrier) and follows the "
-      "path from there.");
+      "interior point, Nested iteration: a finer level's first step is one "
+      "closed-form projection step from the coarser level's answer, then "
+      "the last stage. Where that step misses the law by more than 100 "
+      "times the largest stress (cracks that moved between the meshes), "
+      "the level starts over from the coarser level's strains at this "
+      "barrier (units as Initial barrier) and follows the path from there "
+      "(doc/materials.md).");
     prm.declare_entry(
       "Barrier reduction",
       "0.1",
