@@ -54,14 +54,12 @@ main(int argc, char **argv)
             << std::endl;
 
   // Both stop at a model stress error of 1e-4 of the largest stress on the
-  // same barrier path's end; their stresses differ by that much where the
-  // hinges' cracked strips are (measured below).
-  hrcontact::FieldVector difference;
-  difference.reinit(n.stress, true);
-  difference.copy_locally_owned_data_from(n.stress);
+  // same barrier path's end; their stresses differ most where the hinges'
+  // cracked strips are.
+  hrcontact::FieldVector difference(n.stress);
   difference.add(-1., a.stress);
   std::cout << "largest stress difference / largest stress below 1e-2: "
-            << check(difference.linfty_norm() / a.stress.linfty_norm(), 1e-2)
+            << check(relative(n.stress, a.stress), 1e-2)
             << "\nL2 stress difference / L2 stress below 1e-3: "
             << check(difference.l2_norm() / a.stress.l2_norm(), 1e-3)
             << std::endl;

@@ -352,21 +352,22 @@ namespace hrcontact
   {
     // The elastic step (zero strain, no barrier: the elastic tangent) sets
     // the barrier's scale s^2 / E. On a carried level it is one step of the
-    // closed-form projection from the coarser answer (the barrier's scale
-    // the coarser level's): where the crack pattern stays it lands near the
-    // finer answer (the manufactured pier: model stress error 2 at 32
+    // closed-form projection from the coarser answer, its model stress error
+    // measured against the coarser level's scale: where the crack pattern
+    // stays it lands near the finer answer (the manufactured pier: 2 at 32
     // across), where the cracks moved far off it (the arch's hinges: 2e5);
     // such a start is rejected, its contact solve taken back, and the level
     // follows the path from the coarser level's strains at Carried initial
-    // barrier instead of the last stage alone (4,096 arch cells: 20 steps
+    // barrier instead of the last stage alone (4,096 arch cells: 28 steps
     // instead of 47).
     FieldVector last;
     operations.solve();
     r.material.newton_steps += 1;
     operations.stresses(last);
-    const FieldVector &path_start = r.stress_constraint.start_path_strains;
-    const bool restarts = carried && path_start.size() == state.size() &&
-                          operations.change(last, last) > 1e2;
+    const FieldVector &path_start  = r.stress_constraint.start_path_strains;
+    const double       first_error = operations.change(last, last);
+    const bool         restarts =
+      carried && path_start.size() == state.size() && first_error > 1e2;
     if (restarts)
       {
         // The path's barrier keeps the coarser level's units (its strains
@@ -376,8 +377,8 @@ namespace hrcontact
         growth                                     = 0;
         r.stress_constraint.carried_start_rejected = true;
         log << "  the carried start is far off (model stress error "
-            << operations.change(last, last)
-            << "): the path from Carried initial barrier" << std::endl;
+            << first_error << "): the path from Carried initial barrier"
+            << std::endl;
         if (take_back_last_solve)
           take_back_last_solve();
         copy_field(path_start, last);

@@ -205,9 +205,9 @@ namespace hrcontact
       /** Whether this level's carried start was rejected (far off the
        * finer path) and the path followed from start_path_strains. */
       bool carried_start_rejected = false;
-      /** The largest stress of the elastic step, the barrier's scale; a
-       * finer level keeps its coarser level's (0: from this level's first
-       * solve). */
+      /** The barrier's scale: the largest stress of the level's first
+       * step, or the coarser level's where the level started over on the
+       * path (a finer level's start is judged against it). */
       double elastic_stress = 0;
       /** The Gauss-point method that solved it ("closed-form projection"
        * or "interior point"); empty for the augmented Lagrangian. */
