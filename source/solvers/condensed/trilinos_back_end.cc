@@ -97,19 +97,30 @@ namespace hrcontact
     // alone, so that no K_c is buffered: each goes straight into the
     // fixed part of K or, at a Q or H row, into the kept cells (on a
     // 3D mesh the buffer of every owned K_c was 4.6 KB a cell).
-    DynamicSparsityPattern dsp(partition.relevant);
-    couplings(dsp);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               partition.owned,
-                                               partition.communicator,
-                                               partition.relevant);
-    matrix.reinit(partition.owned,
-                  partition.owned,
-                  dsp,
-                  partition.communicator);
-    dsp.reinit(0, 0);
-    rhs.reinit(partition.owned, partition.communicator);
-    x.reinit(partition.owned, partition.communicator);
+    // The pattern depends on the mesh and the rows only: a material
+    // Newton step (new F_c) refills the same matrix, which also lets a
+    // direct solver keep its symbolic factorisation (TrilinosMumps).
+    if (pattern_built)
+      {
+        matrix = 0.;
+        x      = 0.;
+      }
+    else
+      {
+        DynamicSparsityPattern dsp(partition.relevant);
+        couplings(dsp);
+        SparsityTools::distribute_sparsity_pattern(dsp,
+                                                   partition.owned,
+                                                   partition.communicator,
+                                                   partition.relevant);
+        matrix.reinit(partition.owned,
+                      partition.owned,
+                      dsp,
+                      partition.communicator);
+        rhs.reinit(partition.owned, partition.communicator);
+        x.reinit(partition.owned, partition.communicator);
+        pattern_built = true;
+      }
     // The cells at Q and H rows are kept (also those around a hanging node
     // whose parent has one: it follows the held rows); every other cell
     // goes into the fixed part of K, through the hanging nodes'

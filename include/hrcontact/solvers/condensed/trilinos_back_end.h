@@ -109,6 +109,9 @@ namespace hrcontact
      */
     std::vector<double> matrix_key;
     bool                assembled = false;
+    /** `matrix` has its sparsity pattern (the mesh's couplings, which no
+     * material step changes). */
+    bool pattern_built = false;
   };
 } // namespace hrcontact
 
