@@ -216,7 +216,7 @@ namespace hrcontact
     // sigma_q holds the point's strain state here.
     SymmetricTensor<4, dim> F;
     SymmetricTensor<2, dim> e;
-    cone->model(sigma_q, cu->material_id(), F, e);
+    cone->model(cu->active_cell_index(), q, sigma_q, F, e);
     for (unsigned int c = 0; c < n_comp; ++c)
       for (unsigned int d = 0; d < n_comp; ++d)
         K(c, d) = T[c] * (F * T[d]);

@@ -73,16 +73,45 @@ namespace hrcontact
 
   template <int dim>
   void
-  GaussPointCone<dim>::model(const SymmetricTensor<2, dim> &eps,
-                             const types::material_id       body,
+  GaussPointCone<dim>::linearise(const FieldVector &state)
+  {
+    const unsigned int n = n_points;
+    linearised.resize(
+      spaces.dof_handler_stress.get_triangulation().n_active_cells() * n);
+    for_each_point(
+      {&state},
+      [&](const auto        &cell,
+          const unsigned int t,
+          const double,
+          const std::vector<SymmetricTensor<2, dim>> &at) {
+        PointModel &m = linearised[cell->active_cell_index() * n + t];
+        point_stress(at[0], cell->material_id(), m.sigma, &m.tangent);
+      });
+  }
+
+  template <int dim>
+  const typename GaussPointCone<dim>::PointModel &
+  GaussPointCone<dim>::linearised_at(const unsigned int cell,
+                                     const unsigned int t) const
+  {
+    const std::size_t i = std::size_t(cell) * n_points + t;
+    AssertThrow(i < linearised.size(),
+                ExcMessage("GaussPointCone: the model is read before "
+                           "linearise() was called"));
+    return linearised[i];
+  }
+
+  template <int dim>
+  void
+  GaussPointCone<dim>::model(const unsigned int             cell,
+                             const unsigned int             t,
+                             const SymmetricTensor<2, dim> &eps,
                              SymmetricTensor<4, dim>       &F,
                              SymmetricTensor<2, dim>       &e) const
   {
-    SymmetricTensor<2, dim> sigma;
-    SymmetricTensor<4, dim> D;
-    point_stress(eps, body, sigma, &D);
-    F = invert(D);
-    e = eps - F * sigma;
+    const PointModel &m = linearised_at(cell, t);
+    F                   = invert(m.tangent);
+    e                   = eps - F * m.sigma;
   }
 
   template <int dim>
@@ -181,7 +210,7 @@ namespace hrcontact
                        const unsigned int t,
                        const double,
                        const std::vector<SymmetricTensor<2, dim>> &at) {
-                     model(at[0], cell->material_id(), F, e);
+                     model(cell->active_cell_index(), t, at[0], F, e);
                      cell_strains[t] = F * at[1] + e;
                      if (t + 1 == n)
                        set_point_values(cell, cell_strains, strain);
@@ -220,25 +249,24 @@ namespace hrcontact
   {
     double s = 0, c = 0;
     for_each_point({&eps0, &delta},
-                   [&](const auto &cell,
-                       const unsigned int,
+                   [&](const auto                                 &cell,
+                       const unsigned int                          t,
                        const double                                JxW,
                        const std::vector<SymmetricTensor<2, dim>> &at) {
                      if (!cell->is_locally_owned())
                        return;
-                     SymmetricTensor<2, dim> sigma;
-                     point_stress(at[0] + theta * at[1],
-                                  cell->material_id(),
-                                  sigma,
-                                  nullptr);
+                     const PointModel &m =
+                       linearised_at(cell->active_cell_index(), t);
+                     SymmetricTensor<2, dim> sigma = m.sigma;
+                     if (theta != 0)
+                       point_stress(at[0] + theta * at[1],
+                                    cell->material_id(),
+                                    sigma,
+                                    nullptr);
                      s += JxW * (sigma * at[1]);
+                     // The model's tangent D_q + eta C at eps0.
                      if (curvature)
-                       {
-                         // The model's tangent D_q + eta C at eps0.
-                         SymmetricTensor<4, dim> D;
-                         point_stress(at[0], cell->material_id(), sigma, &D);
-                         c += JxW * (at[1] * (D * at[1]));
-                       }
+                       c += JxW * (at[1] * (m.tangent * at[1]));
                    });
     const MPI_Comm comm =
       spaces.dof_handler_stress.get_triangulation().get_communicator();

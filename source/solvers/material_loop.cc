@@ -242,6 +242,7 @@ namespace hrcontact
     operations.linearise_at = [&](const FieldVector &eps) {
       state.copy_locally_owned_data_from(eps);
       state.update_ghost_values();
+      cone->linearise(state);
       assembler.refresh_flexibility(system, state);
       path.flexibility_changed();
     };
@@ -307,13 +308,22 @@ namespace hrcontact
     r.stress_constraint.elastic_stress    = elastic_stress;
     material_iteration.state_name         = "stress";
     material_iteration.relative_tolerance = material_tolerance;
+    FieldVector &last                     = r.stress_constraint.point_strains;
+    operations.stresses(last);
+    store_fracture_strains(last, r, log);
+  }
+
+  template <int dim>
+  void
+  MaterialLoop<dim>::store_fracture_strains(const FieldVector &strains,
+                                            Results<dim>      &r,
+                                            std::ostream      &log)
+  {
     constraint_field = std::make_unique<StressConstraintField<dim>>(
       *r.scene.stress_constraint,
       r.spaces,
       StressConstraintField<dim>::Points::gauss_points);
-    FieldVector &last = r.stress_constraint.point_strains;
-    operations.stresses(last);
-    cone->store_fracture_strains(last, *constraint_field);
+    cone->store_fracture_strains(strains, *constraint_field);
     r.stress_constraint.cracked_fraction = constraint_field->cracked_fraction();
     r.stress_constraint.largest_fracture_strain =
       constraint_field->largest_opening();

@@ -60,18 +60,32 @@ namespace hrcontact
                    const MixedSpaces<dim>      &spaces,
                    const double                 residual_stiffness);
 
-    /** The Newton model at a point of body @p body with strain @p eps:
-     * F_q and e_q above. */
+    /**
+     * Evaluates the point law (stress and tangent) at every point of the
+     * strain state @p state, which the Newton step's system is built at.
+     * The other members read these values instead of evaluating the law
+     * again: it is the costliest part of a step (an eigen-decomposition and
+     * a scalar Newton iteration per point for the barrier), and it was
+     * evaluated four times at this state per step (the system, the strains
+     * of the solve, the line search's slope and curvature at its start).
+     */
     void
-    model(const dealii::SymmetricTensor<2, dim> &eps,
-          const dealii::types::material_id       body,
+    linearise(const FieldVector &state);
+
+    /** The Newton model at point @p t of the cell with active index
+     * @p cell, whose strain @p eps is that of the last linearise(): F_q
+     * and e_q above. */
+    void
+    model(const unsigned int                     cell,
+          const unsigned int                     t,
+          const dealii::SymmetricTensor<2, dim> &eps,
           dealii::SymmetricTensor<4, dim>       &F,
           dealii::SymmetricTensor<2, dim>       &e) const;
 
     /**
      * The point strains of the last solve, eps(u)_q = F_q s_q + e_q with
-     * the model built at @p state, into @p strain (sized like @p state,
-     * owned and ghost cells).
+     * the model built at @p state (the last linearise()), into @p strain
+     * (sized like @p state, owned and ghost cells).
      */
     void
     strains_of_solve(const FieldVector &state,
@@ -95,7 +109,9 @@ namespace hrcontact
      * Along eps0 + theta delta: sum_q w_q sigma(eps_theta) : delta_q over
      * the owned cells of every process, and with @p curvature the model's
      * second derivative sum_q w_q delta_q : (D_q + eta C) delta_q at eps0
-     * (MaterialIteration's exact line search).
+     * (MaterialIteration's exact line search). @p eps0 is the state of the
+     * last linearise(): at theta = 0 and for the curvature its values are
+     * read, not evaluated again.
      */
     double
     slope(const FieldVector &eps0,
@@ -148,6 +164,21 @@ namespace hrcontact
       const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
       const std::vector<dealii::SymmetricTensor<2, dim>>           &values,
       FieldVector                                                  &v) const;
+
+    /** The law at a point of the last linearise(): its stress and its
+     * tangent with the residual stiffness. */
+    struct PointModel
+    {
+      dealii::SymmetricTensor<2, dim> sigma;
+      dealii::SymmetricTensor<4, dim> tangent;
+    };
+    /** Per active cell index, n_points after another (artificial cells
+     * unused). */
+    std::vector<PointModel> linearised;
+    /** 2^dim. */
+    static constexpr unsigned int n_points = 1u << dim;
+    const PointModel &
+    linearised_at(const unsigned int cell, const unsigned int t) const;
 
     const Scene<dim>                            &scene;
     const MixedSpaces<dim>                      &spaces;

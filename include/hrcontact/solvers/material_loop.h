@@ -128,6 +128,14 @@ namespace hrcontact
                      Results<dim>                        &results,
                      std::ostream                        &log);
 
+    /** run_projected's answer: the fracture strains of the point
+     * @p strains into a Gauss-point StressConstraintField (the output's),
+     * the cracked fraction and the largest opening into @p results. */
+    void
+    store_fracture_strains(const FieldVector &strains,
+                           Results<dim>      &results,
+                           std::ostream      &log);
+
     /** The error that names a load no admissible stress field carries,
      * the strains having grown @p growth times the elastic ones. */
     static NotConvergedError
