@@ -15,7 +15,7 @@ case "$what" in
   *) echo "usage: bash scripts/quickstart.sh example|test" >&2; exit 2 ;;
 esac
 
-packages=(cmake g++ make libdeal.ii-dev numdiff perl libopenblas0-pthread gnuplot-nox universal-ctags)
+packages=(cmake g++ make libdeal.ii-dev libmumps-dev numdiff perl libopenblas0-pthread gnuplot-nox universal-ctags)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

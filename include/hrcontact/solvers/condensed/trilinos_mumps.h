@@ -1,17 +1,17 @@
 #ifndef hrcontact_condensed_trilinos_mumps_h
 #define hrcontact_condensed_trilinos_mumps_h
 
+#include <hrcontact/solvers/condensed/mumps_factor.h>
 #include <hrcontact/solvers/condensed/trilinos_back_end.h>
 
 #include <memory>
 
-#include <Amesos_BaseSolver.h>
-#include <Epetra_LinearProblem.h>
 
 namespace hrcontact
 {
   /**
-   * MUMPS through Trilinos Amesos (Solver = direct on several processes).
+   * MUMPS (Solver = direct on several processes), called as MumpsFactor
+   * says (not through Amesos, which cannot declare the matrix SPD).
    * The factor is kept while the matrix is: a step that changes only the
    * right-hand side costs a forward and back substitution, as with
    * UmfpackBackEnd's factor. A step that changes the values (held rows,
@@ -31,11 +31,9 @@ namespace hrcontact
     void
     drop_matrix_dependents() override;
 
-    /** Amesos keeps a pointer to the problem, the problem to `matrix`
-     * (whose pattern TrilinosBackEnd keeps): the symbolic analysis stays
-     * valid while the values change. */
-    std::unique_ptr<Epetra_LinearProblem> problem;
-    std::unique_ptr<Amesos_BaseSolver>    solver;
+    /** MUMPS's instance: the symbolic analysis of the pattern, and the
+     * numeric factors of the last values. */
+    std::unique_ptr<MumpsFactor> factor;
     /** The numeric factors are those of the current values. */
     bool factorised = false;
   };
