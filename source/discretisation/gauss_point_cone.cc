@@ -218,6 +218,46 @@ namespace hrcontact
   }
 
   template <int dim>
+  void
+  GaussPointCone<dim>::strains_and_stresses(const FieldVector &u,
+                                            const FieldVector &state,
+                                            FieldVector       &strain,
+                                            FieldVector       &stress) const
+  {
+    strain.reinit(state);
+    stress.reinit(state);
+    const DoFHandler<dim>           &dh_u = spaces.dof_handler_displacement;
+    const FiniteElement<dim>        &fe_u = dh_u.get_fe();
+    FEValues<dim>                    fv(fe_u, QGauss<dim>(2), update_gradients);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<SymmetricTensor<2, dim>> eps_u(n_points), eps(n_points),
+      s(n_points);
+    typename DoFHandler<dim>::active_cell_iterator cu;
+    for_each_point(
+      {&state},
+      [&](const auto        &cell,
+          const unsigned int t,
+          const double,
+          const std::vector<SymmetricTensor<2, dim>> &at) {
+        if (t == 0)
+          {
+            cu = typename DoFHandler<dim>::active_cell_iterator(
+              &dh_u.get_triangulation(), cell->level(), cell->index(), &dh_u);
+            fv.reinit(cu);
+            fv[displacement].get_function_symmetric_gradients(u, eps_u);
+          }
+        const PointModel &m = linearised_at(cell->active_cell_index(), t);
+        eps[t]              = eps_u[t];
+        s[t]                = m.sigma + m.tangent * (eps_u[t] - at[0]);
+        if (t + 1 == n_points)
+          {
+            set_point_values(cell, eps, strain);
+            set_point_values(cell, s, stress);
+          }
+      });
+  }
+
+  template <int dim>
   std::pair<double, double>
   GaussPointCone<dim>::model_error(const FieldVector &stress,
                                    const FieldVector &strain) const

@@ -247,9 +247,7 @@ namespace hrcontact
       path.flexibility_changed();
     };
     operations.stresses = [&](FieldVector &eps) {
-      reinit_field(stress, r.spaces.stress_unknowns());
-      path.stresses(stress);
-      cone->strains_of_solve(state, stress, eps);
+      step_strains(path, state, r, stress, eps);
       // Relative to the largest stress of this solve or of the elastic one
       // (a homogeneous tension ends with no stress at all).
       const auto [error, scale] = cone->model_error(stress, eps);
@@ -331,6 +329,27 @@ namespace hrcontact
     log << "  stress constraint: " << r.material.newton_steps
         << " material Newton steps, cracked fraction "
         << r.stress_constraint.cracked_fraction << std::endl;
+  }
+
+  template <int dim>
+  void
+  MaterialLoop<dim>::step_strains(const NewtonStepPath &path,
+                                  const FieldVector    &state,
+                                  const Results<dim>   &r,
+                                  FieldVector          &stress,
+                                  FieldVector          &strain) const
+  {
+    if (path.displacements_are_unknowns())
+      {
+        FieldVector u;
+        reinit_field(u, r.spaces.dof_handler_displacement);
+        path.displacements({}, u);
+        cone->strains_and_stresses(u, state, strain, stress);
+        return;
+      }
+    reinit_field(stress, r.spaces.stress_unknowns());
+    path.stresses(stress);
+    cone->strains_of_solve(state, stress, strain);
   }
 
   template <int dim>

@@ -136,6 +136,16 @@ namespace hrcontact
                            Results<dim>      &results,
                            std::ostream      &log);
 
+    /** The point strains and stresses of the last solve, the model built
+     * at @p state: from the displacements where the path solves for them
+     * (GaussPointCone::strains_and_stresses), else from its stresses. */
+    void
+    step_strains(const NewtonStepPath &path,
+                 const FieldVector    &state,
+                 const Results<dim>   &results,
+                 FieldVector          &stress,
+                 FieldVector          &strain) const;
+
     /** The error that names a load no admissible stress field carries,
      * the strains having grown @p growth times the elastic ones. */
     static NotConvergedError

@@ -76,6 +76,15 @@ namespace hrcontact
     displacements(const std::vector<double> &contact_w,
                   FieldVector               &u) const = 0;
 
+    /** Whether displacements() reads nothing from contact_w (the path
+     * solves for u itself), so that a caller without the contact state
+     * may ask for u. */
+    virtual bool
+    displacements_are_unknowns() const
+    {
+      return false;
+    }
+
     /**
      * w_n = d . u of the Q rows this process sees after the last solve,
      * needed by the displacement AL for rows without a spring. The null-space

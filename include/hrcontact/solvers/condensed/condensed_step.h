@@ -57,6 +57,11 @@ namespace hrcontact
      * start's); MUMPS and UMFPACK ignore it. */
     void
     set_start(const FieldVector &u_start) override;
+    bool
+    displacements_are_unknowns() const override
+    {
+      return true;
+    }
     void
     displacements(const std::vector<double> &contact_w,
                   FieldVector               &u) const override;
