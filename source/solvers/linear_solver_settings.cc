@@ -23,7 +23,8 @@ namespace hrcontact
       Patterns::Selection("automatic|direct|cg-amg"),
       "Condensed path only: how each Newton step's sparse SPD system is "
       "solved. direct: UMFPACK (exact, memory grows fast in 3D), or MUMPS "
-      "through Trilinos Amesos under mpirun; cg-amg: CG preconditioned by "
+      "under mpirun (as a symmetric positive definite matrix, its analysis "
+      "kept while the pattern is); cg-amg: CG preconditioned by "
       "Trilinos ML smoothed-aggregation AMG with the rigid-body modes as near "
       "null space, distributed over the processes under mpirun; automatic: "
       "direct up to Direct solver limit unknowns (per dimension), cg-amg "

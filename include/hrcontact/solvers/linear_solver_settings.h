@@ -11,7 +11,7 @@ namespace hrcontact
   /** The linear solver of a condensed path's systems. */
   enum class LinearSolverKind
   {
-    /** UMFPACK serially, MUMPS through Trilinos Amesos under MPI. */
+    /** UMFPACK serially, MUMPS (MumpsFactor) under MPI. */
     direct,
     /** CG preconditioned by Trilinos ML AMG with the rigid-body modes. */
     cg_amg

@@ -31,7 +31,7 @@ namespace hrcontact
    * assembled once from the owned cells, then per Newton step K u = f with
    * the step's held rows as constraints and its springs added. One
    * implementation per back end, chosen by create_condensed_back_end():
-   * UMFPACK (serial, direct), Trilinos CG + ML AMG, and MUMPS through Amesos
+   * UMFPACK (serial, direct), Trilinos CG + ML AMG, and MUMPS (MumpsFactor)
    * (direct on several processes). Adding one is a new file pair and a line
    * in the factory.
    */
