@@ -230,8 +230,7 @@ namespace hrcontact
     const FiniteElement<dim>        &fe_u = dh_u.get_fe();
     FEValues<dim>                    fv(fe_u, QGauss<dim>(2), update_gradients);
     const FEValuesExtractors::Vector displacement(0);
-    std::vector<SymmetricTensor<2, dim>> eps_u(n_points), eps(n_points),
-      s(n_points);
+    std::vector<SymmetricTensor<2, dim>>           eps_u(n_points), s(n_points);
     typename DoFHandler<dim>::active_cell_iterator cu;
     for_each_point(
       {&state},
@@ -247,11 +246,10 @@ namespace hrcontact
             fv[displacement].get_function_symmetric_gradients(u, eps_u);
           }
         const PointModel &m = linearised_at(cell->active_cell_index(), t);
-        eps[t]              = eps_u[t];
         s[t]                = m.sigma + m.tangent * (eps_u[t] - at[0]);
         if (t + 1 == n_points)
           {
-            set_point_values(cell, eps, strain);
+            set_point_values(cell, eps_u, strain);
             set_point_values(cell, s, stress);
           }
       });
