@@ -1,5 +1,6 @@
 #include <hrcontact/solvers/condensed/mumps_factor.h>
 
+#include <algorithm>
 #include <numeric>
 
 #include <Epetra_CrsMatrix.h>
@@ -43,10 +44,31 @@ namespace hrcontact
   bool
   MumpsFactor::call(const int job)
   {
-    instance->id.job = job;
-    dmumps_c(&instance->id);
-    // INFOG(1) is the same on every process.
-    return instance->id.infog[0] >= 0;
+    DMUMPS_STRUC_C &id = instance->id;
+    id.job             = job;
+    dmumps_c(&id);
+    // Too little working space for the pivots' fill-in (INFOG(1) = -8, -9,
+    // -14, -15, -17 to -20): the numerical phases again with ICNTL(14), the
+    // estimate's margin, doubled, up to 640 %. INFOG(1) is the same on
+    // every process.
+    const auto short_of_space = [&]() {
+      const int e = id.infog[0];
+      return e == -8 || e == -9 || e == -14 || e == -15 ||
+             (e <= -17 && e >= -20);
+    };
+    while (job >= 2 && short_of_space() && id.icntl[13] < 640)
+      {
+        id.icntl[13] = 2 * std::max(id.icntl[13], 20);
+        id.job       = job;
+        dmumps_c(&id);
+      }
+    return id.infog[0] >= 0;
+  }
+
+  int
+  MumpsFactor::error() const
+  {
+    return instance->id.infog[0];
   }
 
   bool

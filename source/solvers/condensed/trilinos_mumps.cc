@@ -3,6 +3,7 @@
 #include <hrcontact/core/input.h>
 #include <hrcontact/solvers/condensed/trilinos_mumps.h>
 
+#include <string>
 
 namespace hrcontact
 {
@@ -30,20 +31,29 @@ namespace hrcontact
     // is done once; every new matrix is factorised numerically on it.
     if (!factor)
       factor = std::make_unique<MumpsFactor>(partition.communicator);
+    // -10: numerically singular (a floating body or a mechanism); anything
+    // else is MUMPS' own failure, named by its code.
+    const auto failure = [&]() {
+      const int code = factor->error();
+      factor.reset();
+      if (code == -10)
+        return InputError(singular_stiffness_message);
+      return InputError(
+        "Linear solver: MUMPS failed with INFOG(1) = " + std::to_string(code) +
+        " (its user guide names the cause); Solver = cg-amg "
+        "avoids it.");
+    };
     if (!factorised)
       {
         if (!factor->factorise(matrix.trilinos_matrix()))
-          {
-            factor.reset();
-            throw InputError(singular_stiffness_message);
-          }
+          throw failure();
         factorised = true;
         ++statistics.preconditioner_setups;
         factor_seconds = timer.wall_time();
         statistics.setup_seconds += factor_seconds;
       }
     if (!factor->solve(rhs.trilinos_vector(), x.trilinos_vector()))
-      throw InputError(singular_stiffness_message);
+      throw failure();
     // MUMPS returns some vector for a singular matrix (a floating body, a
     // mechanism) without a word: an inconsistent system shows in the
     // residual, which UMFPACK and CG would have refused.

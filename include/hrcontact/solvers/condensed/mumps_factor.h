@@ -45,6 +45,12 @@ namespace hrcontact
     bool
     solve(const Epetra_MultiVector &b, Epetra_MultiVector &x);
 
+    /** MUMPS's INFOG(1) after the last call: negative when it failed, -10
+     * for a numerically singular matrix (MUMPS' user guide lists the
+     * others). */
+    int
+    error() const;
+
   private:
     /** Calls MUMPS with job @p job; whether every process succeeded. */
     bool
