@@ -157,7 +157,7 @@ namespace hrcontact
     DMUMPS_STRUC_C &id  = instance->id;
     const int       own = static_cast<int>(own_rows.size());
     const int rank = dealii::Utilities::MPI::this_mpi_process(communicator);
-    std::vector<double> gathered(all_rows.size()), mine(own);
+    std::vector<double> gathered(all_rows.size());
     MPI_Gatherv(b[0],
                 own,
                 MPI_DOUBLE,
