@@ -20,12 +20,8 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::cout << std::setprecision(3);
-  const std::string arch =
-    read_file(std::string(SOURCE_DIR) + "/../parameters/masonry-arch.prm") +
-    "subsection Geometry\n  set Global refinements = 4\nend\n"
-    "subsection Output\n  set Write solution = false\n"
-    "  set Output directory = results\nend\n";
-  const auto alone =
+  const std::string arch = scene_at_refinement("masonry-arch", 3, 4);
+  const auto        alone =
     solve_from_text<2>(arch + "subsection Nested iteration\n"
                               "  set Coarse levels = 0\nend\n");
   const auto nested =

@@ -16,11 +16,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::cout << std::setprecision(3);
   const std::string pier =
-    read_file(std::string(SOURCE_DIR) +
-              "/../parameters/no-tension-manufactured-pier.prm") +
-    "subsection Geometry\n  set Global refinements = 4\nend\n"
-    "subsection Output\n  set Write solution = false\n"
-    "  set Output directory = results\nend\n";
+    scene_at_refinement("no-tension-manufactured-pier", 2, 4);
   const auto alone =
     solve_from_text<2>(pier + "subsection Nested iteration\n"
                               "  set Coarse levels = 0\nend\n");
