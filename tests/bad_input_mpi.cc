@@ -19,7 +19,8 @@ main(int argc, char **argv)
   const std::string                        extra =
     "subsection Equilibrium reduction\n  set Path = condensed\nend\n"
     "subsection Geometry\n  set Global refinements = 3\nend\n";
-  for (const std::string name : {"traction-missing-id",
+  for (const std::string name : {"floating-on-foundation",
+                                 "traction-missing-id",
                                  "obstacle-missing-id",
                                  "support-missing-id",
                                  "probe-outside"})

@@ -223,73 +223,149 @@ namespace hrcontact
     return std::accumulate(by_body.begin(), by_body.end(), 0u);
   }
 
+  namespace
+  {
+    /**
+     * The rigid-body motions of @p body that the prescribed rows and the
+     * contact rows @p holds accepts leave free, one null vector of those
+     * rows restricted to the motions per free motion (in the basis of
+     * translations e_k and rotations about the centroid, scaled by the
+     * bodies' size so that the Gram matrix is balanced).
+     */
+    std::vector<std::vector<double>>
+    free_rigid_motions(const EquilibriumSystem &system,
+                       const unsigned int       body,
+                       const std::function<bool(const EquilibriumRow &)> &holds)
+    {
+      const unsigned int          dim     = system.dim;
+      const unsigned int          n_modes = (dim == 2) ? 3 : 6;
+      const std::array<double, 3> centre  = system.node_coordinates.centre();
+      const double size = std::max(system.node_coordinates.extent(), 1e-300);
+      dealii::LAPACKFullMatrix<double> gram(n_modes, n_modes);
+      auto add_row = [&](const EquilibriumRow &row) {
+        if (!system.node_body.empty())
+          {
+            const auto it = system.node_body.find(row.node);
+            if (it == system.node_body.end() || it->second != body)
+              return;
+          }
+        const auto           &x = row.node < system.node_coordinates.size() ?
+                                    system.node_coordinates[row.node] :
+                                    centre;
+        std::array<double, 3> r = {{(x[0] - centre[0]) / size,
+                                    (x[1] - centre[1]) / size,
+                                    (x[2] - centre[2]) / size}};
+        // d . m for the modes: translations e_k, rotations (-y, x, 0),
+        // (0, -z, y), (z, 0, -x).
+        std::array<double, 3> d = {{0, 0, 0}};
+        for (unsigned int k = 0; k < row.combination.size() && k < dim; ++k)
+          d[k] = row.direction_component(k);
+        std::vector<double> v(n_modes, 0.);
+        for (unsigned int k = 0; k < dim; ++k)
+          v[k] = d[k];
+        v[dim] = -r[1] * d[0] + r[0] * d[1];
+        if (dim == 3)
+          {
+            v[4] = -r[2] * d[1] + r[1] * d[2];
+            v[5] = r[2] * d[0] - r[0] * d[2];
+          }
+        for (unsigned int a = 0; a < n_modes; ++a)
+          for (unsigned int b = 0; b < n_modes; ++b)
+            gram(a, b) += v[a] * v[b];
+      };
+      for (const unsigned int r : system.prescribed_rows)
+        add_row(system.rows[r]);
+      for (const unsigned int r : system.contact_rows)
+        if (holds(system.rows[r]))
+          add_row(system.rows[r]);
+
+      dealii::Vector<double>     eigenvalues;
+      dealii::FullMatrix<double> vectors;
+      gram.compute_eigenvalues_symmetric(-1., 1e300, 0., eigenvalues, vectors);
+      double largest = 0;
+      for (unsigned int k = 0; k < eigenvalues.size(); ++k)
+        largest = std::max(largest, eigenvalues[k]);
+      // No row at all: every motion is free.
+      std::vector<std::vector<double>> free;
+      if (largest == 0)
+        {
+          for (unsigned int m = 0; m < n_modes; ++m)
+            {
+              free.emplace_back(n_modes, 0.);
+              free.back()[m] = 1;
+            }
+          return free;
+        }
+      for (unsigned int k = 0; k < eigenvalues.size(); ++k)
+        if (eigenvalues[k] <= 1e-10 * std::max(largest, 1.))
+          {
+            free.emplace_back(n_modes);
+            for (unsigned int m = 0; m < n_modes; ++m)
+              free.back()[m] = vectors(m, k);
+          }
+      return free;
+    }
+
+    /** "translation along x", "rotation about z", ...: the mode a null
+     * vector of free_rigid_motions is mostly. */
+    std::string
+    describe_rigid_motion(const std::vector<double> &v)
+    {
+      static const char *names[] = {"translation along x",
+                                    "translation along y",
+                                    "translation along z",
+                                    "rotation about z",
+                                    "rotation about x",
+                                    "rotation about y"};
+      unsigned int       largest = 0;
+      for (unsigned int m = 1; m < v.size(); ++m)
+        if (std::abs(v[m]) > std::abs(v[largest]))
+          largest = m;
+      // 2D: the third mode is the rotation (about z).
+      const unsigned int name = (v.size() == 3 && largest == 2) ? 3 : largest;
+      return names[name];
+    }
+  } // namespace
+
   std::vector<unsigned int>
   rigid_motions_held_only_by_contact_by_body(const EquilibriumSystem &system)
   {
-    const unsigned int dim     = system.dim;
-    const unsigned int n_modes = (dim == 2) ? 3 : 6;
-    // Rotations about the centroid, scaled by the body's size, so that the
-    // Gram matrix of translations and rotations is balanced.
-    const std::array<double, 3> centre = system.node_coordinates.centre();
-    const double size = std::max(system.node_coordinates.extent(), 1e-300);
-
     // Each body on its own (a scene of several bodies): the rows of its
-    // nodes must hold its rigid motions.
+    // nodes must hold its rigid motions. Bilateral rows hold; unilateral
+    // contacts and rows with a law of their own (a stop in free travel) may
+    // not.
     std::vector<unsigned int> free_modes(system.n_bodies, 0);
     for (unsigned int body = 0; body < system.n_bodies; ++body)
-      {
-        dealii::LAPACKFullMatrix<double> gram(n_modes, n_modes);
-        auto add_row = [&](const EquilibriumRow &row) {
-          if (!system.node_body.empty())
-            {
-              const auto it = system.node_body.find(row.node);
-              if (it == system.node_body.end() || it->second != body)
-                return;
-            }
-          const auto           &x = row.node < system.node_coordinates.size() ?
-                                      system.node_coordinates[row.node] :
-                                      centre;
-          std::array<double, 3> r = {{(x[0] - centre[0]) / size,
-                                      (x[1] - centre[1]) / size,
-                                      (x[2] - centre[2]) / size}};
-          // d . m for the modes: translations e_k, rotations (-y, x, 0),
-          // (0, -z, y), (z, 0, -x).
-          std::array<double, 3> d = {{0, 0, 0}};
-          for (unsigned int k = 0; k < row.combination.size() && k < dim; ++k)
-            d[k] = row.direction_component(k);
-          std::vector<double> v(n_modes, 0.);
-          for (unsigned int k = 0; k < dim; ++k)
-            v[k] = d[k];
-          v[dim] = -r[1] * d[0] + r[0] * d[1];
-          if (dim == 3)
-            {
-              v[4] = -r[2] * d[1] + r[1] * d[2];
-              v[5] = r[2] * d[0] - r[0] * d[2];
-            }
-          for (unsigned int a = 0; a < n_modes; ++a)
-            for (unsigned int b = 0; b < n_modes; ++b)
-              gram(a, b) += v[a] * v[b];
-        };
-        for (const unsigned int r : system.prescribed_rows)
-          add_row(system.rows[r]);
-        for (const unsigned int r : system.contact_rows)
-          // Bilateral rows hold; unilateral contacts and rows with a law
-          // of their own (a stop in free travel) may not.
-          if (!system.rows[r].unilateral && !system.rows[r].law)
-            add_row(system.rows[r]);
-
-        dealii::Vector<double>     eigenvalues;
-        dealii::FullMatrix<double> vectors;
-        gram.compute_eigenvalues_symmetric(
-          -1., 1e300, 0., eigenvalues, vectors);
-        double largest = 0;
-        for (unsigned int k = 0; k < eigenvalues.size(); ++k)
-          largest = std::max(largest, eigenvalues[k]);
-        unsigned int free = n_modes - eigenvalues.size();
-        for (unsigned int k = 0; k < eigenvalues.size(); ++k)
-          free += (eigenvalues[k] <= 1e-10 * std::max(largest, 1.));
-        free_modes[body] = free;
-      }
+      free_modes[body] =
+        free_rigid_motions(system, body, [](const EquilibriumRow &row) {
+          return !row.unilateral && !row.law;
+        }).size();
     return free_modes;
+  }
+
+  std::string
+  rigid_motions_no_row_holds(const EquilibriumSystem &system)
+  {
+    // A row that couples several nodes (a contact pair) may hold a body
+    // through another one: such scenes are left to the contact iteration.
+    for (const unsigned int r : system.contact_rows)
+      {
+        const auto &combination = system.rows[r].combination;
+        for (const auto &[dof, c] : combination)
+          if (system.dof_node(dof) != system.dof_node(combination[0].first))
+            return "";
+      }
+    std::string names;
+    for (unsigned int body = 0; body < system.n_bodies; ++body)
+      for (const auto &motion :
+           free_rigid_motions(system, body, [](const EquilibriumRow &) {
+             return true;
+           }))
+        names +=
+          std::string(names.empty() ? "" : ", ") +
+          (system.n_bodies > 1 ? "body " + std::to_string(body + 1) + ": " :
+                                 "") +
+          describe_rigid_motion(motion);
+    return names;
   }
 } // namespace hrcontact

@@ -103,6 +103,13 @@ namespace hrcontact
     const double load_scale = system.load.linfty_norm();
     contact_solver.set_nodal_compliance(
       r.scene.nodal_compliance(r.triangulation()));
+    const std::string floating = rigid_motions_no_row_holds(system);
+    if (!floating.empty())
+      throw InputError(
+        "Supports: no support and no contact holds the " + floating +
+        " (the body floats along it whatever touches: a frictionless "
+        "contact holds only its normal). Prescribe displacements or point "
+        "supports that stop it.");
     r.free_rigid_motions = find_bodies_held_only_by_contact(system);
     // Kinds whose rows follow the configuration (curved obstacles).
     std::vector<std::unique_ptr<RowRelinearisation>> relinearisations;
