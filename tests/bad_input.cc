@@ -17,6 +17,7 @@ main()
                                  "floating-body",
                                  "floating-body-condensed",
                                  "floating-on-foundation",
+                                 "floating-on-foundation-3d",
                                  "poor-stress-space",
                                  "impossible-geometry",
                                  "conflicting-supports",
