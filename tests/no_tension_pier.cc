@@ -2,10 +2,11 @@
 // issue 54): 1 m wide, 6 m tall, on a unilateral foundation, the load N =
 // 1e5 N/m on a strip of the top at e = b/4 from the axis (beyond the middle
 // third), the cone at every Gauss point by the interior point. At 8 x 48
-// cells: the barrier path converges (model stress change below 1e-4) in at
-// most 300 Newton steps (226 when written); no Gauss point carries tension
-// beyond the allowance and the tolerance; the KKT conditions of the
-// foundation hold; the section through the middle of the cell row at
+// cells: the barrier path converges (model stress change below the scene's
+// 1e-6, which fixes the section's peak: at 1e-4 it moved by 3-6 % with the
+// path) in at most 1000 Newton steps (698 when written); no Gauss point
+// carries tension beyond the allowance and the tolerance; the KKT conditions
+// of the foundation hold; the section through the middle of the cell row at
 // mid-height carries N to round-off (for DGQ1 on rectangles the mid-line
 // integral of sigma_yy is the row average that discrete equilibrium fixes);
 // its moment, compressed width and peak are printed against the closed form
@@ -40,13 +41,13 @@ main()
   problem->output_results(quiet); // the balance report for print_kkt
   const auto &res = problem->results();
   std::cout << (4 << r) / 4 << " x " << 6 * (1 << r)
-            << " cells: converged (model stress change below 1e-4): "
-            << check(res.material.changes.back(), 1e-4)
-            << ", in at most 300 Newton steps: "
-            << (res.material.newton_steps <= 300 ? "yes" : "NO")
-            << "\n  tension at any Gauss point below 1.01e-4 of the largest "
-               "stress: "
-            << check(largest_gauss_point_stress(res), 1.01e-4) << '\n';
+            << " cells: converged (model stress change below 1e-6): "
+            << check(res.material.changes.back(), 1e-6)
+            << ", in at most 1000 Newton steps: "
+            << (res.material.newton_steps <= 1000 ? "yes" : "NO")
+            << "\n  tension at any Gauss point below 2.01e-6 of the largest "
+               "stress (the allowance and the tolerance): "
+            << check(largest_gauss_point_stress(res), 2.01e-6) << '\n';
   print_kkt(*problem);
 
   // The section through the middle of the cell row at mid-height.
