@@ -67,4 +67,12 @@ main()
     "no-tension pier without its horizontal guide",
     hrcontact_tests::scene_at_refinement("no-tension-manufactured-pier", 2, 2) +
       "subsection Supports\n  set Prescribed displacements =\nend\n");
+  // The point-load pier at 16 cells across with a residual stiffness too
+  // small to hold its cracked strip: the singular stiffness is named as
+  // such, with the entry that holds it.
+  hrcontact_tests::print_input_refusal(
+    "no-tension pier with too small a residual stiffness",
+    hrcontact_tests::scene_at_refinement("no-tension-pier", 3, 4) +
+      "subsection Stress constraint iteration\n"
+      "  set Barrier residual stiffness = 1e-10\nend\n");
 }

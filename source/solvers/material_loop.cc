@@ -1,9 +1,11 @@
 #include <hrcontact/core/input.h>
 #include <hrcontact/discretisation/hr_assembler.h>
 #include <hrcontact/material/linear_elasticity.h>
+#include <hrcontact/solvers/condensed/linear_back_end.h>
 #include <hrcontact/solvers/material_loop.h>
 
 #include <algorithm>
+#include <sstream>
 
 namespace hrcontact
 {
@@ -92,7 +94,15 @@ namespace hrcontact
     if (r.scene.stress_constraint)
       {
         if (projects_constraint(r.scene, r.spaces.stress_element_name))
-          run_projected(system, path, operations, r, log);
+          try
+            {
+              run_projected(system, path, operations, r, log);
+            }
+          catch (const SingularStiffnessError &e)
+            {
+              throw InputError(cracked_region_hint(
+                e.what(), r.scene, r.spaces.stress_element_name));
+            }
         else
           run_constrained(system, path, operations, r, log);
         return;
@@ -350,6 +360,27 @@ namespace hrcontact
     reinit_field(stress, r.spaces.stress_unknowns());
     path.stresses(stress);
     cone->strains_of_solve(state, stress, strain);
+  }
+
+  template <int dim>
+  std::string
+  MaterialLoop<dim>::cracked_region_hint(
+    const std::string &singular,
+    const Scene<dim>  &scene,
+    const std::string &stress_element) const
+  {
+    const bool interior = method(scene, stress_element) ==
+                          StressConstraintIteration::Method::interior_point;
+    std::ostringstream s;
+    s << singular << " With Material/Admissible stresses = "
+      << scene.stress_constraint->name()
+      << ", a region cracked in every direction has no stiffness of its own: "
+         "its Newton systems are held only by Stress constraint iteration/"
+      << (interior ? "Barrier residual stiffness" : "Residual stiffness")
+      << " (" << cone->residual_stiffness << " of C here, "
+      << (interior ? "1e-8" : "1e-4")
+      << " by default); raise it if it is below that.";
+    return s.str();
   }
 
   template <int dim>

@@ -146,6 +146,13 @@ namespace hrcontact
                  FieldVector          &stress,
                  FieldVector          &strain) const;
 
+    /** The singular-stiffness error @p singular, with what a cracked
+     * region means for it: held only by the residual stiffness. */
+    std::string
+    cracked_region_hint(const std::string &singular,
+                        const Scene<dim>  &scene,
+                        const std::string &stress_element) const;
+
     /** The error that names a load no admissible stress field carries,
      * the strains having grown @p growth times the elastic ones. */
     static NotConvergedError

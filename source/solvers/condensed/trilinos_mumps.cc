@@ -37,7 +37,7 @@ namespace hrcontact
       const int code = factor->error();
       factor.reset();
       if (code == -10)
-        return InputError(singular_stiffness_message);
+        throw SingularStiffnessError(singular_stiffness_message);
       return InputError(
         "Linear solver: MUMPS failed with INFOG(1) = " + std::to_string(code) +
         " (its user guide names the cause); Solver = cg-amg "
@@ -62,7 +62,7 @@ namespace hrcontact
     residual -= rhs;
     const double scale = rhs.l2_norm();
     if (!(residual.l2_norm() <= 1e-8 * std::max(scale, 1e-300)))
-      throw InputError(singular_stiffness_message);
+      throw SingularStiffnessError(singular_stiffness_message);
     statistics.solve_seconds += timer.wall_time() - factor_seconds;
   }
 } // namespace hrcontact

@@ -79,7 +79,7 @@ namespace hrcontact
     catch (const std::exception &)
       {
         direct_factor.reset();
-        throw InputError(singular_stiffness_message);
+        throw SingularStiffnessError(singular_stiffness_message);
       }
     ++statistics.preconditioner_setups;
   }

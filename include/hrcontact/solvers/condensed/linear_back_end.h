@@ -6,6 +6,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <hrcontact/core/input.h>
 #include <hrcontact/discretisation/dof_partition.h>
 #include <hrcontact/discretisation/equilibrium_system.h>
 #include <hrcontact/discretisation/field_vector.h>
@@ -91,6 +92,15 @@ namespace hrcontact
 
   /** What a singular K means to the user (a direct back end's failure). */
   extern const std::string singular_stiffness_message;
+
+  /** A direct back end found K singular (singular_stiffness_message): an
+   * input error, which the material loop can name more closely (a cracked
+   * region held only by the residual stiffness). */
+  class SingularStiffnessError : public InputError
+  {
+  public:
+    using InputError::InputError;
+  };
 } // namespace hrcontact
 
 #endif
