@@ -343,7 +343,7 @@ namespace hrcontact
     return free_modes;
   }
 
-  std::vector<std::string>
+  std::vector<std::vector<std::string>>
   rigid_motions_no_row_holds(const EquilibriumSystem &system)
   {
     // A row that couples several nodes (a contact pair) may hold a body
@@ -355,16 +355,13 @@ namespace hrcontact
           if (system.dof_node(dof) != system.dof_node(combination[0].first))
             return {};
       }
-    std::vector<std::string> names;
+    std::vector<std::vector<std::string>> names(system.n_bodies);
     for (unsigned int body = 0; body < system.n_bodies; ++body)
       for (const auto &motion :
            free_rigid_motions(system, body, [](const EquilibriumRow &) {
              return true;
            }))
-        names.push_back((system.n_bodies > 1 ?
-                           "body " + std::to_string(body + 1) + "'s " :
-                           "") +
-                        describe_rigid_motion(motion));
+        names[body].push_back(describe_rigid_motion(motion));
     return names;
   }
 } // namespace hrcontact

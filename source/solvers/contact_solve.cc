@@ -103,23 +103,26 @@ namespace hrcontact
     const double load_scale = system.load.linfty_norm();
     contact_solver.set_nodal_compliance(
       r.scene.nodal_compliance(r.triangulation()));
-    const std::vector<std::string> floating =
-      rigid_motions_no_row_holds(system);
-    if (!floating.empty())
-      {
-        std::string names =
-          (floating[0].rfind("body ", 0) == 0 ? "" : "the body's ") +
-          floating[0];
-        for (unsigned int k = 1; k < floating.size(); ++k)
-          names += (k + 1 == floating.size() ? " and " : ", ") + floating[k];
-        const bool one = floating.size() == 1;
-        throw InputError(
-          "Supports: nothing holds " + names +
-          " (no support, and no contact whatever touches: a frictionless "
-          "contact holds only its normal), so the body floats. Prescribe "
-          "displacements or point supports that stop " +
-          (one ? "it." : "them."));
-      }
+    const auto floating = rigid_motions_no_row_holds(system);
+    for (unsigned int b = 0; b < floating.size(); ++b)
+      if (!floating[b].empty())
+        {
+          const auto &motions = floating[b];
+          std::string names   = floating.size() > 1 ?
+                                  "body " + std::to_string(b + 1) + "'s " :
+                                  "the body's ";
+          for (unsigned int k = 0; k < motions.size(); ++k)
+            names += (k == 0                  ? "" :
+                      k + 1 == motions.size() ? " and " :
+                                                ", ") +
+                     motions[k];
+          throw InputError(
+            "Supports: nothing holds " + names +
+            " (no support, and no contact whatever touches: a frictionless "
+            "contact holds only its normal), so the body floats. Prescribe "
+            "displacements or point supports that stop " +
+            (motions.size() == 1 ? "it." : "them."));
+        }
     r.free_rigid_motions = find_bodies_held_only_by_contact(system);
     // Kinds whose rows follow the configuration (curved obstacles).
     std::vector<std::unique_ptr<RowRelinearisation>> relinearisations;

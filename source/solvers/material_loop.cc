@@ -378,7 +378,8 @@ namespace hrcontact
          "its Newton systems are held only by Stress constraint iteration/"
       << (interior ? "Barrier residual stiffness" : "Residual stiffness")
       << " (" << cone->residual_stiffness << " of C here, "
-      << (interior ? "1e-8" : "1e-4")
+      << (interior ? BarrierPath().residual_stiffness :
+                     StressConstraintIteration().residual_stiffness)
       << " by default); raise it if it is below that.";
     return s.str();
   }

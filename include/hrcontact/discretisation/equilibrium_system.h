@@ -375,14 +375,13 @@ namespace hrcontact
   /**
    * The rigid-body motions that no row holds whatever the contact state
    * (the prescribed rows and every contact row, taken as bilateral), named
-   * ("translation along x"; "body 2's translation along x" in a scene of
-   * several bodies), or none.
-   * A frictionless foundation holds only its normal: a body on it with no
-   * support along it floats, and no contact iteration can change that.
-   * Empty too where a contact row couples several nodes (a contact pair,
-   * which may hold a body through another one).
+   * ("translation along x"), for each body. A frictionless foundation
+   * holds only its normal: a body on it with no support along it floats,
+   * and no contact iteration can change that. No entry at all where a
+   * contact row couples several nodes (a contact pair, which may hold a
+   * body through another one).
    */
-  std::vector<std::string>
+  std::vector<std::vector<std::string>>
   rigid_motions_no_row_holds(const EquilibriumSystem &system);
 
 } // namespace hrcontact

@@ -33,12 +33,12 @@ namespace hrcontact
       factor = std::make_unique<MumpsFactor>(partition.communicator);
     // -10: numerically singular (a floating body or a mechanism); anything
     // else is MUMPS' own failure, named by its code.
-    const auto failure = [&]() {
+    const auto fail = [&]() {
       const int code = factor->error();
       factor.reset();
       if (code == -10)
         throw SingularStiffnessError(singular_stiffness_message);
-      return InputError(
+      throw InputError(
         "Linear solver: MUMPS failed with INFOG(1) = " + std::to_string(code) +
         " (its user guide names the cause); Solver = cg-amg "
         "avoids it.");
@@ -46,14 +46,14 @@ namespace hrcontact
     if (!factorised)
       {
         if (!factor->factorise(matrix.trilinos_matrix()))
-          throw failure();
+          fail();
         factorised = true;
         ++statistics.preconditioner_setups;
         factor_seconds = timer.wall_time();
         statistics.setup_seconds += factor_seconds;
       }
     if (!factor->solve(rhs.trilinos_vector(), x.trilinos_vector()))
-      throw failure();
+      fail();
     // MUMPS returns some vector for a singular matrix (a floating body, a
     // mechanism) without a word: an inconsistent system shows in the
     // residual, which UMFPACK and CG would have refused.
