@@ -84,37 +84,20 @@ namespace hrcontact
                                       std::vector<double>       &X_out) const
   {
     X_out.assign(n * k, 0.);
-    if (X.empty())
-      {
-        Vector<double> g(n), c(m), x;
-        for (int j = 0; j < k; ++j)
-          {
-            std::copy(G.begin() + j * n, G.begin() + (j + 1) * n, g.begin());
-            std::copy(C.begin() + j * m, C.begin() + (j + 1) * m, c.begin());
-            solve(g, c, x);
-            std::copy(x.begin(), x.end(), X_out.begin() + j * n);
-          }
-        return;
-      }
-    // X_1 = X (Pi^T C)_r, then the null space's part for every column.
+    // The row-space part: R_11^T W = (Pi^T C)_r and X_1 = Q (W; 0), all
+    // columns at once.
     std::vector<double> W(r * k);
     for (int j = 0; j < k; ++j)
       for (int i = 0; i < r; ++i)
         W[i + j * r] = C[pivots[i] - 1 + j * m];
     const double plus = 1, minus = -1, zero = 0;
-    dgemm_("N",
-           "N",
-           &n,
-           &k,
-           &r,
-           &plus,
-           X.data(),
-           &n,
-           W.data(),
-           &r,
-           &zero,
-           X_out.data(),
-           &n);
+    if (r > 0)
+      dtrsm_("L", "U", "T", "N", &r, &k, &plus, qr.data(), &n, W.data(), &r);
+    for (int j = 0; j < k; ++j)
+      std::copy(W.begin() + j * r,
+                W.begin() + (j + 1) * r,
+                X_out.begin() + j * n);
+    apply_q(X_out, k);
     const int n_null = n - r;
     if (n_null == 0)
       return;
@@ -160,26 +143,6 @@ namespace hrcontact
            &plus,
            X_out.data(),
            &n);
-  }
-
-  void
-  ConstrainedLeastSquares::make_explicit()
-  {
-    if (!X.empty() || r == 0)
-      return;
-    // Q_1: the first r columns of Q, which only the first r reflectors
-    // touch; then X = Q_1 R_11^-T.
-    X.assign(qr.begin(), qr.begin() + n * r);
-    int    info = 0, lwork = -1;
-    double size = 0;
-    dorgqr_(&n, &r, &r, X.data(), &n, tau.data(), &size, &lwork, &info);
-    std::vector<double> scratch(std::max<std::size_t>(std::lround(size), n));
-    lwork = scratch.size();
-    dorgqr_(
-      &n, &r, &r, X.data(), &n, tau.data(), scratch.data(), &lwork, &info);
-    AssertThrow(info == 0, ExcMessage("dorgqr failed"));
-    const double plus = 1;
-    dtrsm_("R", "U", "T", "N", &n, &r, &plus, qr.data(), &n, X.data(), &n);
   }
 
   void
@@ -243,25 +206,10 @@ namespace hrcontact
     const int    one  = 1;
     const double plus = 1, minus = -1, zero = 0;
     x.reinit(n);
-    if (!X.empty())
-      dgemv_("N",
-             &n,
-             &r,
-             &plus,
-             X.data(),
-             &n,
-             w.data(),
-             &one,
-             &zero,
-             x.begin(),
-             &one);
-    else
-      {
-        if (r > 0)
-          dtrsv_("U", "T", "N", &r, qr.data(), &n, w.data(), &one);
-        apply_q(w, 1);
-        std::copy(w.begin(), w.end(), x.begin());
-      }
+    if (r > 0)
+      dtrsv_("U", "T", "N", &r, qr.data(), &n, w.data(), &one);
+    apply_q(w, 1);
+    std::copy(w.begin(), w.end(), x.begin());
     const int k = n - r;
     if (k == 0)
       return;

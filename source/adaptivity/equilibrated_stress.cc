@@ -116,14 +116,12 @@ namespace hrcontact
       }
     else
       {
-        coefficients.assign(results.triangulation().n_active_cells(),
-                            Vector<double>());
-        bound_squared.assign(coefficients.size(), 0.);
-        HexahedronBound(results).compute(coefficients,
-                                         bound_squared,
-                                         solution_energy,
-                                         traction_residual,
-                                         cell_residual);
+        bound_squared.assign(results.triangulation().n_active_cells(), 0.);
+        hexahedra = std::make_shared<HexahedronBound>(results);
+        hexahedra->compute(bound_squared,
+                           solution_energy,
+                           traction_residual,
+                           cell_residual);
       }
   }
 
@@ -241,8 +239,8 @@ namespace hrcontact
       }
     else
       {
-        const auto sums =
-          HexahedronBound(results).compare(coefficients, reference);
+        Assert(hexahedra, ExcMessage("compute() first"));
+        const auto sums                     = hexahedra->compare(reference);
         result.displacement_error_squared   = sums[0];
         result.reconstruction_error_squared = sums[1];
         result.stress_error_squared         = sums[2];

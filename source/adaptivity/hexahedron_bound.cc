@@ -5,6 +5,7 @@
 #include <hrcontact/adaptivity/hexahedron_bound.h>
 #include <hrcontact/adaptivity/hexahedron_equilibration.h>
 #include <hrcontact/adaptivity/hexahedron_face_tractions.h>
+#include <hrcontact/adaptivity/hexahedron_shape_map.h>
 #include <hrcontact/adaptivity/triangle_split.h>
 #include <hrcontact/postprocess/field_values.h>
 
@@ -18,21 +19,10 @@ namespace hrcontact
 
   namespace
   {
-    /** The trilinear hat of unit vertex v at xi, and its gradient. */
     double
     hat(const unsigned int v, const Tensor<1, 3> &xi, Tensor<1, 3> &gradient)
     {
-      double f[3], df[3];
-      for (unsigned int d = 0; d < 3; ++d)
-        {
-          const bool upper = (v >> d) & 1u;
-          f[d]             = upper ? xi[d] : 1 - xi[d];
-          df[d]            = upper ? 1 : -1;
-        }
-      gradient[0] = df[0] * f[1] * f[2];
-      gradient[1] = f[0] * df[1] * f[2];
-      gradient[2] = f[0] * f[1] * df[2];
-      return f[0] * f[1] * f[2];
+      return HexahedronShapeMap::hat(v, xi, gradient);
     }
 
     /** The components (xx, yy, zz, xy, xz, yz) of a stress. */
@@ -83,9 +73,33 @@ namespace hrcontact
     }
   } // namespace
 
+  struct HexahedronBound::Body
+  {
+    FullMatrix<double>                                                    S;
+    HexahedronEquilibration                                               eq;
+    std::map<std::vector<long long>, std::unique_ptr<HexahedronShapeMap>> maps;
+    explicit Body(const FullMatrix<double> &S)
+      : S(S)
+      , eq(S)
+    {}
+  };
+
   HexahedronBound::HexahedronBound(const Results<3> &results)
     : results(results)
-  {}
+  {
+    const auto table = [](const FiniteElement<3>             &fe,
+                          std::vector<std::array<double, 8>> &values) {
+      values.resize(fe.n_dofs_per_cell());
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        for (unsigned int v = 0; v < 8; ++v)
+          values[i][v] =
+            fe.shape_value(i, GeometryInfo<3>::unit_cell_vertex(v));
+    };
+    table(*results.spaces.fe_displacement, u_at_vertices);
+    table(*results.spaces.fe_stress, s_at_vertices);
+  }
+
+  HexahedronBound::~HexahedronBound() = default;
 
   std::string
   HexahedronBound::not_covered(const Results<3> &r)
@@ -173,167 +187,116 @@ namespace hrcontact
       for (unsigned int i = 0; i < 3; ++i)
         J[i][d] = cell->vertex(1u << d)[i] - fields.v0[i];
     fields.J_inv = invert(J);
+    std::array<std::array<double, 6>, 8> s{};
+    for (unsigned int v = 0; v < 8; ++v)
+      fields.u[v] = Tensor<1, 3>();
+    for (unsigned int i = 0; i < u_dofs.size(); ++i)
+      {
+        const unsigned int c = fe_u.system_to_component_index(i).first;
+        const double       U = results.displacement(u_dofs[i]);
+        for (unsigned int v = 0; v < 8; ++v)
+          fields.u[v][c] += U * u_at_vertices[i][v];
+      }
+    for (unsigned int j = 0; j < s_dofs.size(); ++j)
+      {
+        const unsigned int c = fe_s.system_to_component_index(j).first;
+        const double       S = results.stress(s_dofs[j]);
+        for (unsigned int v = 0; v < 8; ++v)
+          s[v][c] += S * s_at_vertices[j][v];
+      }
     for (unsigned int v = 0; v < 8; ++v)
       {
-        const Point<3> p = GeometryInfo<3>::unit_cell_vertex(v);
-        fields.u[v]      = Tensor<1, 3>();
-        for (unsigned int i = 0; i < u_dofs.size(); ++i)
-          fields.u[v][fe_u.system_to_component_index(i).first] +=
-            results.displacement(u_dofs[i]) * fe_u.shape_value(i, p);
-        Vector<double> components(6);
-        for (unsigned int j = 0; j < s_dofs.size(); ++j)
-          components(fe_s.system_to_component_index(j).first) +=
-            results.stress(s_dofs[j]) * fe_s.shape_value(j, p);
+        Vector<double> components(s[v].begin(), s[v].end());
         fields.s[v] = stress_tensor<3>(components);
       }
   }
 
   void
-  HexahedronBound::compute(std::vector<Vector<double>> &coefficients,
-                           std::vector<double>         &bound_squared,
-                           double                      &solution_energy,
-                           double                      &traction_residual,
-                           double                      &cell_residual) const
+  HexahedronBound::compute(std::vector<double> &bound_squared,
+                           double              &solution_energy,
+                           double              &traction_residual,
+                           double              &cell_residual)
   {
     const HexahedronFaceTractions faces(results);
     // The largest stress dof over every process.
     const double sigma_max = results.stress.linfty_norm();
     traction_residual      = faces.residual;
     cell_residual = solution_energy = 0;
-    // Per body: its cell problem and compliance; the own cells in batches
-    // of 64 a body (each shape's factors streamed once a batch).
-    std::map<types::material_id, std::unique_ptr<HexahedronEquilibration>>
-                                                    problems;
-    std::map<types::material_id, std::vector<Cell>> pending;
-    const auto flush = [&](const types::material_id body) {
-      std::vector<Cell> &cells = pending[body];
-      if (cells.empty())
-        return;
-      auto &eq = problems[body];
-      if (!eq)
-        eq = std::make_unique<HexahedronEquilibration>(
-          component_compliance(results.scene.material_of(body)));
-      solve_batch(faces,
-                  sigma_max,
-                  *eq,
-                  cells,
-                  coefficients,
-                  bound_squared,
-                  solution_energy,
-                  cell_residual);
-      cells.clear();
-    };
+    cell_maps.assign(results.triangulation().n_active_cells(), CellMap());
+    CellFields     fields;
+    Vector<double> f(3);
     for (const auto &cell :
          results.spaces.dof_handler_displacement.active_cell_iterators())
       if (results.partition.owned_cell[cell->active_cell_index()])
         {
-          pending[cell->material_id()].push_back(cell);
-          if (pending[cell->material_id()].size() == 64)
-            flush(cell->material_id());
+          const unsigned int index = cell->active_cell_index();
+          auto              &body  = bodies[cell->material_id()];
+          if (!body)
+            body = std::make_unique<Body>(component_compliance(
+              results.scene.material_of(cell->material_id())));
+          // The shape's map, made on its first cell.
+          const auto vertices = vertices_of(cell);
+          auto &map = body->maps[HexahedronEquilibration::shape_key(vertices)];
+          if (!map)
+            map =
+              std::make_unique<HexahedronShapeMap>(body->eq, vertices, body->S);
+          const double s = vertices[0].distance(vertices[7]) / map->h;
+          sample(cell, fields);
+          CellMap &c = cell_maps[index];
+          c.map      = map.get();
+          c.s        = s;
+          c.d.assign(HexahedronShapeMap::n_data, 0.);
+          for (unsigned int v = 0; v < 8; ++v)
+            for (unsigned int i = 0; i < 3; ++i)
+              c.d[HexahedronShapeMap::u_index(v, i)] = fields.u[v][i] / s;
+          for (unsigned int k = 0; k < 6; ++k)
+            {
+              const auto   face = cell->face(k);
+              Tensor<1, 3> n =
+                cross_product_3d(face->vertex(1) - face->vertex(0),
+                                 face->vertex(2) - face->vertex(0));
+              if (n * (face->center() - cell->center()) < 0)
+                n = -n;
+              n /= n.norm();
+              const auto points = HexahedronShapeMap::face_points(vertices, k);
+              std::array<Tensor<1, 3>, 9> t;
+              for (unsigned int q = 0; q < 9; ++q)
+                t[q] = faces.traction(face->index(), index, points[q], n);
+              HexahedronShapeMap::project_traction(t, k, c.d.data());
+            }
+          if (results.scene.body_force)
+            {
+              const auto points = HexahedronShapeMap::cell_points(vertices);
+              std::array<Tensor<1, 3>, 8> values;
+              for (unsigned int q = 0; q < 8; ++q)
+                {
+                  results.scene.body_force->vector_value(points[q], f);
+                  values[q] = Tensor<1, 3>({f[0], f[1], f[2]});
+                }
+              HexahedronShapeMap::project_body_force(values, s, c.d.data());
+            }
+          bound_squared[index] = s * s * s * map->bound_squared(c.d.data());
+          std::array<double, 48> stresses;
+          for (unsigned int v = 0; v < 8; ++v)
+            {
+              const auto a = components(fields.s[v]);
+              std::copy(a.begin(), a.end(), stresses.begin() + 6 * v);
+            }
+          solution_energy += s * s * s * map->stress_energy(stresses);
+          // Relative to the largest stress times the cell's face area, as in
+          // 2D (the largest stress times its edge length).
+          const double h = cell->diameter();
+          cell_residual  = std::max(cell_residual,
+                                   s * s * map->defect(c.d.data()) /
+                                     std::max(sigma_max * h * h, 1e-300));
         }
-    for (const auto &[body, cells] : pending)
-      flush(body);
     const MPI_Comm comm = results.partition.communicator;
     cell_residual       = Utilities::MPI::max(cell_residual, comm);
     solution_energy     = Utilities::MPI::sum(solution_energy, comm);
   }
 
-  void
-  HexahedronBound::solve_batch(const HexahedronFaceTractions &faces,
-                               const double                   sigma_max,
-                               HexahedronEquilibration       &eq,
-                               const std::vector<Cell>       &cells,
-                               std::vector<Vector<double>>   &coefficients,
-                               std::vector<double>           &bound_squared,
-                               double                        &solution_energy,
-                               double &cell_residual) const
-  {
-    const auto        &law = results.scene.material_of(cells[0]->material_id());
-    FullMatrix<double> S   = component_compliance(law), C(6, 6);
-    C.invert(S);
-    // Each cell's fields, sampled once; the callbacks read the current one.
-    std::vector<CellFields> sampled(cells.size());
-    const CellFields       *fields = nullptr;
-    Cell                    cell;
-    const auto traction = [&](const unsigned int f, const Point<3> &x) {
-      const auto   face = cell->face(f);
-      Tensor<1, 3> n    = cross_product_3d(face->vertex(1) - face->vertex(0),
-                                        face->vertex(2) - face->vertex(0));
-      if (n * (face->center() - cell->center()) < 0)
-        n = -n;
-      return faces.traction(face->index(),
-                            cell->active_cell_index(),
-                            x,
-                            n / n.norm());
-    };
-    const auto body_force = [&](const Point<3> &x) {
-      Vector<double> f(3);
-      results.scene.body_force->vector_value(x, f);
-      return Tensor<1, 3>({f[0], f[1], f[2]});
-    };
-    // C eps(u_h): C on the components, engineering shear strains.
-    const auto target = [&](const Point<3> &x) {
-      const auto   e     = fields->strain(x);
-      const double ev[6] = {
-        e[0][0], e[1][1], e[2][2], 2 * e[0][1], 2 * e[0][2], 2 * e[1][2]};
-      double c[6] = {0, 0, 0, 0, 0, 0};
-      for (unsigned int a = 0; a < 6; ++a)
-        for (unsigned int b = 0; b < 6; ++b)
-          c[a] += C(a, b) * ev[b];
-      SymmetricTensor<2, 3> sigma;
-      sigma[0][0] = c[0];
-      sigma[1][1] = c[1];
-      sigma[2][2] = c[2];
-      sigma[0][1] = c[3];
-      sigma[0][2] = c[4];
-      sigma[1][2] = c[5];
-      return sigma;
-    };
-    const HexahedronEquilibration::VectorField force =
-      results.scene.body_force ?
-        HexahedronEquilibration::VectorField(body_force) :
-        HexahedronEquilibration::VectorField();
-    std::vector<HexahedronEquilibration::CellData>         data(cells.size());
-    std::vector<const HexahedronEquilibration::CellData *> batch;
-    for (unsigned int i = 0; i < cells.size(); ++i)
-      {
-        cell = cells[i];
-        sample(cell, sampled[i]);
-        fields = &sampled[i];
-        eq.data(vertices_of(cell), traction, force, target, data[i]);
-        batch.push_back(&data[i]);
-      }
-    std::vector<Vector<double>> x;
-    std::vector<double>         residuals;
-    eq.solve(batch, x, residuals);
-    std::vector<Point<3>> points;
-    std::vector<double>   weights;
-    for (unsigned int i = 0; i < cells.size(); ++i)
-      {
-        cell                     = cells[i];
-        const unsigned int index = cell->active_cell_index();
-        eq.set_cell(vertices_of(cell));
-        coefficients[index]  = x[i];
-        bound_squared[index] = eq.distance(x[i], data[i].targets);
-        // Relative to the largest stress times the cell's face area, as in
-        // 2D (the largest stress times its edge length).
-        const double h = cell->diameter();
-        cell_residual =
-          std::max(cell_residual,
-                   residuals[i] / std::max(sigma_max * h * h, 1e-300));
-        for (unsigned int k = 0; k < HexahedronEquilibration::n_tetrahedra; ++k)
-          {
-            eq.tetrahedron_rule(k, points, weights);
-            for (unsigned int q = 0; q < points.size(); ++q)
-              solution_energy +=
-                weights[q] * energy(S, sampled[i].stress(points[q]));
-          }
-      }
-  }
-
   std::array<double, 4>
-  HexahedronBound::compare(const std::vector<Vector<double>> &coefficients,
-                           const Function<3>                 &reference) const
+  HexahedronBound::compare(const Function<3> &reference) const
   {
     std::array<double, 4> sums{};
     CellFields            fields;
@@ -344,11 +307,15 @@ namespace hrcontact
          results.spaces.dof_handler_displacement.active_cell_iterators())
       if (results.partition.owned_cell[cell->active_cell_index()])
         {
-          const auto &law      = results.scene.material_of(cell->material_id());
-          FullMatrix<double> S = component_compliance(law), C(6, 6);
+          Body                     &body = *bodies.at(cell->material_id());
+          const FullMatrix<double> &S    = body.S;
+          FullMatrix<double>        C(6, 6);
           C.invert(S);
-          HexahedronEquilibration eq(S);
+          HexahedronEquilibration &eq = body.eq;
           eq.set_cell(vertices_of(cell));
+          const CellMap &c = cell_maps[cell->active_cell_index()];
+          Vector<double> x;
+          c.map->coefficients(c.d.data(), x);
           sample(cell, fields);
           for (unsigned int k = 0; k < HexahedronEquilibration::n_tetrahedra;
                ++k)
@@ -371,13 +338,7 @@ namespace hrcontact
                       c(a) += C(a, b) * ev[b];
                   const double w = weights[q];
                   sums[0] += w * energy(S, sigma - stress_tensor<3>(c));
-                  sums[1] +=
-                    w *
-                    energy(S,
-                           sigma -
-                             eq.stress(coefficients[cell->active_cell_index()],
-                                       k,
-                                       points[q]));
+                  sums[1] += w * energy(S, sigma - eq.stress(x, k, points[q]));
                   sums[2] += w * energy(S, sigma - fields.stress(points[q]));
                   sums[3] += w * energy(S, sigma);
                 }

@@ -390,6 +390,17 @@ namespace hrcontact
     return sum;
   }
 
+  std::vector<long long>
+  HexahedronEquilibration::shape_key(const std::array<Point<3>, 8> &v)
+  {
+    const double           h = v[0].distance(v[7]);
+    std::vector<long long> key;
+    for (unsigned int i = 1; i < 8; ++i)
+      for (unsigned int d = 0; d < 3; ++d)
+        key.push_back(std::llround((v[i][d] - v[0][d]) / h * 1e10));
+    return key;
+  }
+
   void
   HexahedronEquilibration::data(const std::array<Point<3>, 8> &vertices,
                                 const Traction                &traction,
@@ -398,19 +409,16 @@ namespace hrcontact
                                 CellData                      &cell)
   {
     set_cell(vertices);
-    const Geometry &G = geometry;
-    // The shape up to translation and scale.
-    std::vector<long long> key;
-    for (unsigned int v = 1; v < 8; ++v)
-      for (unsigned int d = 0; d < 3; ++d)
-        key.push_back(std::llround((G.P[v][d] - G.P[0][d]) / G.h * 1e10));
-    auto it = shapes.find(key);
+    const Geometry &G  = geometry;
+    auto            it = shapes.find(shape_key(vertices));
     if (it == shapes.end())
       {
         FullMatrix<double> A, H;
         constraints(traction, body_force, &A, cell.c0);
         energy(target, &H, cell.g0, cell.targets);
-        it = shapes.emplace(key, ShapeFactors(std::move(A), H, G.h)).first;
+        it = shapes
+               .emplace(shape_key(vertices), ShapeFactors(std::move(A), H, G.h))
+               .first;
       }
     else
       {
@@ -418,9 +426,8 @@ namespace hrcontact
         energy(target, nullptr, cell.g0, cell.targets);
       }
     ShapeFactors &shape = it->second;
-    ++shape.uses;
-    rank       = shape.rank();
-    n_unknowns = shape.n_unknowns();
+    rank                = shape.rank();
+    n_unknowns          = shape.n_unknowns();
     // A similar cell of size h: A scales as (h / h_0)^2, the energy as
     // (h / h_0)^3 (the unknowns are stresses).
     cell.shape = &shape;
@@ -432,9 +439,12 @@ namespace hrcontact
   void
   HexahedronEquilibration::solve(const std::vector<const CellData *> &batch,
                                  std::vector<Vector<double>>         &x,
-                                 std::vector<double>                 &residuals)
+                                 std::vector<double>                 &residuals,
+                                 std::vector<Vector<double>>         *defects)
   {
     x.resize(batch.size());
+    if (defects)
+      defects->resize(batch.size());
     residuals.assign(batch.size(), 0.);
     std::vector<bool> done(batch.size(), false);
     for (unsigned int first = 0; first < batch.size(); ++first)
@@ -452,14 +462,14 @@ namespace hrcontact
               }
           const int m = batch[first]->c0.size(), n = shape.n_unknowns(),
                     k = cells.size();
-          std::vector<double> G(n * k), C(m * k), X, defect;
+          std::vector<double> G(n * k), C(m * k), X, defect, D;
           for (int j = 0; j < k; ++j)
             {
               const CellData &cell = *batch[cells[j]];
               std::copy(cell.g0.begin(), cell.g0.end(), G.begin() + j * n);
               std::copy(cell.c0.begin(), cell.c0.end(), C.begin() + j * m);
             }
-          shape.solve(G, C, k, X, defect);
+          shape.solve(G, C, k, X, defect, defects ? &D : nullptr);
           // Back in each cell's units (A = s^2 A_0).
           for (int j = 0; j < k; ++j)
             {
@@ -469,6 +479,12 @@ namespace hrcontact
                         X.begin() + (j + 1) * n,
                         x[cells[j]].begin());
               residuals[cells[j]] = s * s * defect[j];
+              if (defects)
+                {
+                  (*defects)[cells[j]] =
+                    Vector<double>(D.begin() + j * m, D.begin() + (j + 1) * m);
+                  (*defects)[cells[j]] *= s * s;
+                }
             }
         }
   }

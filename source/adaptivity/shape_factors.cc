@@ -23,10 +23,9 @@ namespace hrcontact
                       const std::vector<double> &C,
                       const int                  k,
                       std::vector<double>       &X,
-                      std::vector<double>       &largest_defect)
+                      std::vector<double>       &largest_defect,
+                      std::vector<double>       *defects)
   {
-    if (uses >= 2)
-      least_squares.make_explicit();
     const int           m = A.m(), n = A.n();
     std::vector<double> R(m * k);
     least_squares.solve_many(G, C, k, X);
@@ -62,9 +61,9 @@ namespace hrcontact
     };
     std::vector<double> relative;
     defect(relative);
-    // The explicit map loses digits where R_11 is ill conditioned: where a
-    // cell's constraints are off by more than 1e-11 of its data, one step
-    // of refinement (the minimiser is linear in the data) for all.
+    // Where R_11 is ill conditioned and a column's constraints are off by
+    // more than 1e-11 of its data, one step of refinement (the minimiser
+    // is linear in the data) for all.
     if (*std::max_element(relative.begin(), relative.end()) > 1e-11)
       {
         std::vector<double> zero(n * k, 0.), minus_R(R), correction;
@@ -75,6 +74,8 @@ namespace hrcontact
           X[i] += correction[i];
         defect(relative);
       }
+    if (defects)
+      *defects = R;
     largest_defect.assign(k, 0.);
     for (int j = 0; j < k; ++j)
       for (int i = 0; i < m; ++i)

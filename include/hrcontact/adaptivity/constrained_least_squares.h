@@ -45,31 +45,19 @@ namespace hrcontact
           const dealii::Vector<double> &c,
           dealii::Vector<double>       &x) const;
 
-    /** k problems at once (column-major G: n x k, C: m x k, X: n x k), as
-     * matrix products when the map is explicit: the factors are streamed
-     * from memory once for all of them, not once a problem. */
+    /** k problems at once (column-major G: n x k, C: m x k, X: n x k),
+     * as matrix products: the factors are streamed from memory once for
+     * all of them, not once a problem. */
     void
     solve_many(const std::vector<double> &G,
                const std::vector<double> &C,
                const int                  k,
                std::vector<double>       &X_out) const;
 
-    /** Keeps the map from c to x's row-space part explicitly, X = Q_1
-     * R_11^-T (n x r): one matrix-vector product a solve instead of the
-     * reflectors and a triangular solve, for a shape solved many times
-     * (3D: 2.5 times faster a cell; about a second to build at n = 1,440). */
-    void
-    make_explicit();
-
     unsigned int
     rank() const
     {
       return r;
-    }
-    bool
-    is_explicit() const
-    {
-      return !X.empty();
     }
 
   private:
@@ -79,8 +67,6 @@ namespace hrcontact
     std::vector<int>            pivots;
     /** Q_2 (n x (n - r), column-major), H Q_2 and the reduced Hessian. */
     std::vector<double> Q2, HQ2, K;
-    /** make_explicit()'s X, column-major, or empty. */
-    std::vector<double> X;
     /** Q applied to the n x k column-major block B. */
     void
     apply_q(std::vector<double> &B, const int k) const;

@@ -10,11 +10,13 @@
 #include <hrcontact/core/results.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace hrcontact
 {
   class FaceTractions;
+  class HexahedronBound;
 
   /**
    * A statically admissible stress tau reconstructed from the HR stresses:
@@ -116,10 +118,12 @@ namespace hrcontact
     /** The contact term and the lift, after the cells (2D). */
     void
     add_contact_terms(const FaceTractions &faces);
-    /** The polynomial coefficients of each cell's four triangles. */
+    /** The polynomial coefficients of each cell's four triangles (2D). */
     std::vector<dealii::Vector<double>> coefficients;
-    std::vector<double>                 bound_squared;
-    double                              solution_energy = 0;
+    /** 3D: the cells' data and their shapes' maps (compare()). */
+    std::shared_ptr<HexahedronBound> hexahedra;
+    std::vector<double>              bound_squared;
+    double                           solution_energy = 0;
   };
 } // namespace hrcontact
 

@@ -9,26 +9,32 @@
 #include <hrcontact/core/results.h>
 
 #include <array>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace hrcontact
 {
-  class HexahedronFaceTractions;
-  class HexahedronEquilibration;
+  class HexahedronShapeMap;
 
   /**
    * The error bound in 3D (EquilibratedStress's two steps on a conforming
    * mesh of parallelepipeds, linear elastic bodies): HexahedronFaceTractions
    * balance every cell, HexahedronEquilibration finds in each the
-   * admissible stress nearest C eps(u_h). On a parallelepiped the Q1 map is
-   * affine and u_h, sigma_h are trilinear in the cell's own coordinates, so
-   * they are sampled from their vertex values in closed form.
+   * admissible stress nearest C eps(u_h). That cell problem is linear in
+   * the cell's data (u_h at the vertices, the face tractions, the body
+   * force) and its factors depend on the shape only, so per shape it is
+   * solved once for each of the 144 data (HexahedronShapeMap) and a cell
+   * costs a few small products. On a parallelepiped the Q1 map is affine
+   * and u_h, sigma_h are trilinear in the cell's own coordinates, so they
+   * are sampled from their vertex values in closed form.
    */
   class HexahedronBound
   {
   public:
     explicit HexahedronBound(const Results<3> &results);
+    ~HexahedronBound();
 
     /** What the 3D bound does not cover in @p results (empty if nothing):
      * cells that are not parallelepipeds, hanging nodes, contact rows,
@@ -36,25 +42,23 @@ namespace hrcontact
     static std::string
     not_covered(const Results<3> &results);
 
-    /** Per own cell: tau's coefficients, eta_K^2 and |sigma_h|^2_{C^-1,K};
-     * the admissibility residuals. */
+    /** Per active cell eta_K^2 (own cells), |sigma_h|^2_{C^-1} summed
+     * over the processes; the admissibility residuals. */
     void
-    compute(std::vector<dealii::Vector<double>> &coefficients,
-            std::vector<double>                 &bound_squared,
-            double                              &solution_energy,
-            double                              &traction_residual,
-            double                              &cell_residual) const;
+    compute(std::vector<double> &bound_squared,
+            double              &solution_energy,
+            double              &traction_residual,
+            double              &cell_residual);
 
     /** Against an exact stress: |sigma - C eps(u_h)|^2, |sigma - tau|^2,
-     * |sigma - sigma_h|^2 and |sigma|^2 (this process's cells). */
+     * |sigma - sigma_h|^2 and |sigma|^2 (this process's cells), tau from
+     * the data compute() kept. */
     std::array<double, 4>
-    compare(const std::vector<dealii::Vector<double>> &coefficients,
-            const dealii::Function<3>                 &reference) const;
+    compare(const dealii::Function<3> &reference) const;
 
   private:
     const Results<3> &results;
-    /** u_h and sigma_h at a point of the current cell, from their vertex
-     * values. */
+    /** u_h and sigma_h at the vertices of a cell. */
     struct CellFields
     {
       dealii::Point<3>                             v0;
@@ -66,21 +70,22 @@ namespace hrcontact
       dealii::SymmetricTensor<2, 3>
       stress(const dealii::Point<3> &x) const;
     };
+    /** The finite elements' shape values at the unit cell's vertices. */
+    std::vector<std::array<double, 8>> u_at_vertices, s_at_vertices;
     void
     sample(const dealii::DoFHandler<3>::active_cell_iterator &cell,
            CellFields                                        &fields) const;
-    using Cell = dealii::DoFHandler<3>::active_cell_iterator;
-    /** A batch of cells of one body: their data, one solve, their shares
-     * of the bound and of the stresses' energy. */
-    void
-    solve_batch(const HexahedronFaceTractions       &faces,
-                const double                         sigma_max,
-                HexahedronEquilibration             &eq,
-                const std::vector<Cell>             &cells,
-                std::vector<dealii::Vector<double>> &coefficients,
-                std::vector<double>                 &bound_squared,
-                double                              &solution_energy,
-                double                              &cell_residual) const;
+    /** Per body its cell problem and the maps of its shapes; per own cell
+     * its map, its size over the map's and its data. */
+    struct Body;
+    std::map<dealii::types::material_id, std::unique_ptr<Body>> bodies;
+    struct CellMap
+    {
+      const HexahedronShapeMap *map = nullptr;
+      double                    s   = 1;
+      std::vector<double>       d;
+    };
+    std::vector<CellMap> cell_maps;
   };
 } // namespace hrcontact
 

@@ -90,12 +90,19 @@ namespace hrcontact
      * The coefficients of the cells of @p batch together: per shape, one
      * matrix product for all its cells (its factors, some 30 MB, streamed
      * from memory once rather than once a cell), and the constraints'
-     * largest defect per cell, in its own units (@p residuals).
+     * largest defect per cell, in its own units (@p residuals); each
+     * cell's A x - c into @p defects if given.
      */
     void
     solve(const std::vector<const CellData *> &batch,
           std::vector<dealii::Vector<double>> &x,
-          std::vector<double>                 &residuals);
+          std::vector<double>                 &residuals,
+          std::vector<dealii::Vector<double>> *defects = nullptr);
+
+    /** The shape of @p vertices up to translation and scale (the key the
+     * factors are kept by). */
+    static std::vector<long long>
+    shape_key(const std::array<dealii::Point<3>, 8> &vertices);
     /** |tau - target|^2_{C^-1} on the cell set last (set_cell()), the
      * target at the rule's points as data() kept it. */
     double

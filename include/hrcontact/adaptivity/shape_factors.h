@@ -12,12 +12,9 @@ namespace hrcontact
   /**
    * The factors of one cell shape's local problem of the error bound (the
    * constraints A, m x n, and the energy H of its first cell, of size h),
-   * and the solve of many cells of that shape at once: from the shape's
-   * second cell on the map from the data to x is explicit
-   * (ConstrainedLeastSquares::make_explicit) and applied to all the cells'
-   * data as one matrix product, and one step of iterative refinement
-   * restores the digits that map loses where a cell's constraints are off
-   * by more than 1e-11 of its data.
+   * and the solve of many right-hand sides at once (HexahedronShapeMap's
+   * 144 data columns), with one step of iterative refinement where a
+   * column's constraints are off by more than 1e-11 of its data.
    */
   class ShapeFactors
   {
@@ -28,8 +25,6 @@ namespace hrcontact
 
     /** The size of the cell the factors were computed on. */
     double h;
-    /** Cells that announced themselves (the explicit map pays from 2). */
-    unsigned int uses = 0;
 
     unsigned int
     rank() const
@@ -43,13 +38,15 @@ namespace hrcontact
     }
 
     /** k problems (column-major data G, n x k, and C, m x k): X (n x k)
-     * and, per column, the largest entry of A x - c. */
+     * and, per column, the largest entry of A x - c; A X - C itself (m x
+     * k) into @p defects if given. */
     void
     solve(const std::vector<double> &G,
           const std::vector<double> &C,
           const int                  k,
           std::vector<double>       &X,
-          std::vector<double>       &largest_defect);
+          std::vector<double>       &largest_defect,
+          std::vector<double>       *defects = nullptr);
 
   private:
     dealii::FullMatrix<double> A;
