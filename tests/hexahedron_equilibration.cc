@@ -8,12 +8,22 @@
 // - the tractions and body force of a random quadratic stress field must
 //   give that field back (the bound against it 0 to round-off);
 // - a translated and scaled copy reuses the factors and gives the scaled
-//   answer.
+//   answer;
+// - the shape's map (HexahedronShapeMap, made on the first cell) must give
+//   on the translated and scaled copies, from the data (u_h at the
+//   vertices, the tractions at the face points, the body force at the cell
+//   points), the bound and tau of the direct solve with the target C
+//   eps(u_h) of a random trilinear u_h to 1e-10 (tau's coefficients to
+//   1e-6: both are the triangular solve of R_11, whose conditioning
+//   amplifies round-off to 5e-8 on the sheared cell), a defect of the
+//   constraints below 1e-11, and the energy of a random trilinear stress
+//   as a 3 x 3 x 3 Gauss rule integrates it to 1e-12.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <hrcontact/adaptivity/hexahedron_equilibration.h>
+#include <hrcontact/adaptivity/hexahedron_shape_map.h>
 
 #include <iostream>
 #include <random>
@@ -135,11 +145,122 @@ balanced_data(const std::array<Point<3>, 8> &v,
             << std::endl;
 }
 
+/** The map of the shape on the cell @p w of size @p s times the map's,
+ * against the direct solve, for the data @p traction and @p body_force
+ * and a random trilinear u_h. */
 void
-exact_field(const std::array<Point<3>, 8> &v,
-            const double                   scale,
-            const Tensor<1, 3>            &shift,
-            std::mt19937                  &random)
+compare_with_map(const hrcontact::HexahedronShapeMap                &map,
+                 const std::array<Point<3>, 8>                      &w,
+                 const double                                        s,
+                 const hrcontact::HexahedronEquilibration::Traction &traction,
+                 const hrcontact::HexahedronEquilibration::VectorField &force,
+                 std::mt19937                                          &random)
+{
+  using Map = hrcontact::HexahedronShapeMap;
+  std::uniform_real_distribution<double> uniform(-1., 1.);
+  const FullMatrix<double>               S = isotropic_compliance(1., 0.3);
+  FullMatrix<double>                     C(6, 6);
+  C.invert(S);
+  Tensor<2, 3> J;
+  for (unsigned int d = 0; d < 3; ++d)
+    for (unsigned int i = 0; i < 3; ++i)
+      J[i][d] = w[1u << d][i] - w[0][i];
+  const Tensor<2, 3>          J_inv = invert(J);
+  std::array<Tensor<1, 3>, 8> u;
+  for (auto &uv : u)
+    for (unsigned int i = 0; i < 3; ++i)
+      uv[i] = 1e-3 * uniform(random);
+  const auto target = [&](const Point<3> &x) {
+    Tensor<2, 3> grad;
+    for (unsigned int a = 0; a < 8; ++a)
+      {
+        Tensor<1, 3> g;
+        Map::hat(a, J_inv * (x - w[0]), g);
+        grad += outer_product(u[a], transpose(J_inv) * g);
+      }
+    const SymmetricTensor<2, 3> e     = symmetrize(grad);
+    const double                ev[6] = {
+                     e[0][0], e[1][1], e[2][2], 2 * e[0][1], 2 * e[0][2], 2 * e[1][2]};
+    double c[6] = {0, 0, 0, 0, 0, 0};
+    for (unsigned int a = 0; a < 6; ++a)
+      for (unsigned int b = 0; b < 6; ++b)
+        c[a] += C(a, b) * ev[b];
+    SymmetricTensor<2, 3> sigma;
+    sigma[0][0] = c[0];
+    sigma[1][1] = c[1];
+    sigma[2][2] = c[2];
+    sigma[0][1] = c[3];
+    sigma[0][2] = c[4];
+    sigma[1][2] = c[5];
+    return sigma;
+  };
+  hrcontact::HexahedronEquilibration direct(S);
+  Vector<double>                     x_direct, x_map;
+  const double eta_direct = direct.solve(w, traction, force, target, x_direct);
+  std::vector<double> d(Map::n_data, 0.);
+  for (unsigned int a = 0; a < 8; ++a)
+    for (unsigned int i = 0; i < 3; ++i)
+      d[Map::u_index(a, i)] = u[a][i] / s;
+  for (unsigned int f = 0; f < 6; ++f)
+    {
+      const auto                  points = Map::face_points(w, f);
+      std::array<Tensor<1, 3>, 9> t;
+      for (unsigned int q = 0; q < 9; ++q)
+        t[q] = traction(f, points[q]);
+      Map::project_traction(t, f, d.data());
+    }
+  const auto                  points = Map::cell_points(w);
+  std::array<Tensor<1, 3>, 8> f;
+  for (unsigned int q = 0; q < 8; ++q)
+    f[q] = force(points[q]);
+  Map::project_body_force(f, s, d.data());
+  const double eta_map = s * s * s * map.bound_squared(d.data());
+  map.coefficients(d.data(), x_map);
+  x_map -= x_direct;
+  // A random trilinear stress: its energy by the map and by a Gauss rule.
+  std::array<double, 48> sv;
+  for (double &a : sv)
+    a = uniform(random);
+  const QGauss<3> rule(3);
+  double          energy = 0;
+  for (unsigned int q = 0; q < rule.size(); ++q)
+    {
+      const Tensor<1, 3> xi(rule.point(q));
+      double             sigma[6] = {0, 0, 0, 0, 0, 0};
+      for (unsigned int a = 0; a < 8; ++a)
+        {
+          Tensor<1, 3> g;
+          const double N = Map::hat(a, xi, g);
+          for (unsigned int i = 0; i < 6; ++i)
+            sigma[i] += N * sv[6 * a + i];
+        }
+      for (unsigned int i = 0; i < 6; ++i)
+        for (unsigned int j = 0; j < 6; ++j)
+          energy += rule.weight(q) * std::abs(determinant(J)) * sigma[i] *
+                    S(i, j) * sigma[j];
+    }
+  const double energy_map = s * s * s * map.stress_energy(sv);
+  const double h          = w[0].distance(w[7]);
+  std::cout
+    << "    the shape's map: the direct bound (1e-10): "
+    << hrcontact_tests::check(std::abs(eta_map - eta_direct) / eta_direct,
+                              1e-10)
+    << ", tau (1e-6): "
+    << hrcontact_tests::check(x_map.linfty_norm() / x_direct.linfty_norm(),
+                              1e-6)
+    << ", defect (1e-11): "
+    << hrcontact_tests::check(s * s * map.defect(d.data()) / (h * h), 1e-11)
+    << ", trilinear energy (1e-12): "
+    << hrcontact_tests::check(std::abs(energy_map - energy) / energy, 1e-12)
+    << std::endl;
+}
+
+void
+exact_field(const std::array<Point<3>, 8>       &v,
+            const double                         scale,
+            const Tensor<1, 3>                  &shift,
+            std::mt19937                        &random,
+            const hrcontact::HexahedronShapeMap &map)
 {
   std::uniform_real_distribution<double> uniform(-1., 1.);
   // sigma_ij = sum over the ten quadratic monomials of (x, y, z).
@@ -226,6 +347,7 @@ exact_field(const std::array<Point<3>, 8> &v,
             << hrcontact_tests::check(bound / energy, 1e-20)
             << "; constraints met (1e-11): "
             << hrcontact_tests::check(cell.residual, 1e-11) << std::endl;
+  compare_with_map(map, w, scale, traction, body_force, random);
 }
 
 int
@@ -247,7 +369,12 @@ main(int argc, char **argv)
       std::cout << name << ":" << std::endl;
       const auto v = parallelepiped(Point<3>(0.1, -0.2, 0.3), J);
       balanced_data(v, J, random);
-      exact_field(v, 1., Tensor<1, 3>(), random);
-      exact_field(v, 0.25, Tensor<1, 3>({3., 1., -2.}), random);
+      hrcontact::HexahedronEquilibration  eq(isotropic_compliance(1., 0.3));
+      const hrcontact::HexahedronShapeMap map(eq,
+                                              v,
+                                              isotropic_compliance(1., 0.3));
+      exact_field(v, 1., Tensor<1, 3>(), random, map);
+      exact_field(v, 0.25, Tensor<1, 3>({3., 1., -2.}), random, map);
+      exact_field(v, 2.5, Tensor<1, 3>({-1., 0.5, 4.}), random, map);
     }
 }

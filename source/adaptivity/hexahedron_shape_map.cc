@@ -288,6 +288,23 @@ namespace hrcontact
     for (unsigned int j = 0; j < n_data; ++j)
       std::copy(X[j].begin(), X[j].end(), M.begin() + j * n_unknowns);
     factor_residual(eq, S, elastic_stress, X);
+    // sigma_h's energy: trilinear times trilinear, exact on the 2 x 2 x 2
+    // Gauss rule (the Jacobian is constant).
+    G.reinit(48, 48);
+    const double volume =
+      std::abs(determinant(invert(elastic_stress.frame.J_inv)));
+    for (const Point<3> &x : cell_points(v))
+      {
+        double       N[8];
+        Tensor<1, 3> g;
+        for (unsigned int a = 0; a < 8; ++a)
+          N[a] = hat(a, elastic_stress.frame.unit(x), g);
+        for (unsigned int a = 0; a < 8; ++a)
+          for (unsigned int b = 0; b < 8; ++b)
+            for (unsigned int i = 0; i < 6; ++i)
+              for (unsigned int j = 0; j < 6; ++j)
+                G(6 * a + i, 6 * b + j) += volume / 8 * N[a] * N[b] * S(i, j);
+      }
     const int n = n_data;
     // The constraints' defect A M - c(d) as a linear map of d: data that
     // no balanced cell has (a single column) is not met, so its norm is
@@ -376,7 +393,6 @@ namespace hrcontact
                                       const UnitStrainStress   &elastic_stress,
                                       const std::vector<Vector<double>> &X)
   {
-    const Frame &frame = elastic_stress.frame;
     // The residual tau - C eps(u_h) at the rule's points, weighted (S = L
     // L^T, w |L^T r|^2), and its QR factor.
     FullMatrix<double> L(6, 6);
@@ -391,8 +407,7 @@ namespace hrcontact
       }
     const int           m = 6 * n_points, n = n_data;
     std::vector<double> W(std::size_t(m) * n, 0.);
-    G.reinit(48, 48);
-    unsigned int row = 0;
+    unsigned int        row = 0;
     for (unsigned int k = 0; k < HexahedronEquilibration::n_tetrahedra; ++k)
       {
         eq.tetrahedron_rule(k, points, weights);
@@ -422,17 +437,6 @@ namespace hrcontact
                     W[std::size_t(j) * m + row + a] = sqrt_w * y;
                   }
               }
-            // sigma_h's energy: the trilinear hats at the point.
-            double       N[8];
-            Tensor<1, 3> g;
-            for (unsigned int a = 0; a < 8; ++a)
-              N[a] = hat(a, frame.unit(points[q]), g);
-            for (unsigned int a = 0; a < 8; ++a)
-              for (unsigned int b = 0; b < 8; ++b)
-                for (unsigned int i = 0; i < 6; ++i)
-                  for (unsigned int jj = 0; jj < 6; ++jj)
-                    G(6 * a + i, 6 * b + jj) +=
-                      weights[q] * N[a] * N[b] * S(i, jj);
           }
       }
     triangular_factor(W, m, n, R, pivots);
