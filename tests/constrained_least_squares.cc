@@ -7,7 +7,9 @@
 // hold where c is in A's range; the KKT condition (H x - g orthogonal to
 // A's null space) must hold; and an energy that is not positive definite
 // on the null space must be refused by name; several data at once
-// (solve_many) must give each one's own x.
+// (solve_many) must give each one's own x; factor_without (unpivoted QR
+// without the rows factor() found dependent) must give the same x, and
+// refuse a rank-deficient A whose dependent rows it is not told.
 
 #include <deal.II/base/mpi.h>
 
@@ -160,6 +162,19 @@ compare(const unsigned int m,
     many = std::max({many,
                      std::abs(X[i] - x(i)) / x.linfty_norm(),
                      std::abs(X[n + i] - x2(i)) / x2.linfty_norm()});
+  // Without the rows factor() found dependent, by unpivoted QR: the same
+  // x; without none of them (rank deficient): refused.
+  hrcontact::ConstrainedLeastSquares without;
+  const bool                         reduced =
+    without.factor_without(p.A, least_squares.dependent_rows());
+  Vector<double> x_without;
+  if (reduced)
+    {
+      without.solve(p.H, p.g, p.c, x_without);
+      x_without -= x;
+    }
+  const bool refused =
+    rank == m || !hrcontact::ConstrainedLeastSquares().factor_without(p.A, {});
   std::cout << m << " x " << n << " of rank " << rank
             << ": rank found: " << least_squares.rank()
             << "\n  x as from the SVD (1e-10): "
@@ -169,7 +184,14 @@ compare(const unsigned int m,
             << "\n  N^T (H x - g) = 0 (1e-10): "
             << hrcontact_tests::check(kkt.l2_norm() / p.g.l2_norm(), 1e-10)
             << "\n  the same two at once by solve_many (1e-12): "
-            << hrcontact_tests::check(many, 1e-12) << std::endl;
+            << hrcontact_tests::check(many, 1e-12)
+            << "\n  the same without the dependent rows (1e-10): "
+            << (reduced ?
+                  hrcontact_tests::check(x_without.l2_norm() / x.l2_norm(),
+                                         1e-10) :
+                  std::string("NO (not factored)"))
+            << "; with them kept, refused: " << (refused ? "yes" : "NO")
+            << std::endl;
 }
 
 int

@@ -478,7 +478,16 @@ namespace hrcontact
     tabulate(split, points, direct);
     constraint_data(cell, split, points, weights, direct, c);
     energy_gradient(direct, body, nonlinear, n_tri, g);
-    least_squares.factor(A_direct);
+    // The split's dependent rows are structural: from its second cell on,
+    // dropped before an unpivoted QR (the pivoted one where the rest is
+    // not of full rank).
+    std::vector<unsigned int> &dropped =
+      dependent_rows[{n_tri, split.split_faces}];
+    if (dropped.empty() || !least_squares.factor_without(A_direct, dropped))
+      {
+        least_squares.factor(A_direct);
+        dropped = least_squares.dependent_rows();
+      }
     least_squares.solve(H_direct, g, c, x);
     Ax.reinit(c.size());
     A_direct.vmult(Ax, x);

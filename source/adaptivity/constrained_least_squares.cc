@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hrcontact
 {
@@ -43,11 +44,74 @@ namespace hrcontact
       ++r;
   }
 
+  std::vector<unsigned int>
+  ConstrainedLeastSquares::dependent_rows() const
+  {
+    std::vector<unsigned int> rows;
+    for (int i = r; i < m; ++i)
+      rows.push_back(pivots[i] - 1);
+    return rows;
+  }
+
+  bool
+  ConstrainedLeastSquares::factor_without(
+    const FullMatrix<double>        &A,
+    const std::vector<unsigned int> &dropped,
+    const double                     tolerance)
+  {
+    const int         m_all = A.m(), n_all = A.n();
+    std::vector<bool> drop(m_all, false);
+    for (const unsigned int i : dropped)
+      drop[i] = true;
+    std::vector<int> kept;
+    for (int i = 0; i < m_all; ++i)
+      if (!drop[i])
+        kept.push_back(i);
+    const int k = kept.size();
+    if (k > n_all)
+      return false;
+    // The kept rows of A are the columns of A^T (n x k, column-major).
+    std::vector<double> f(std::size_t(n_all) * k);
+    for (int j = 0; j < k; ++j)
+      std::copy(&A(kept[j], 0), &A(kept[j], 0) + n_all, f.begin() + j * n_all);
+    std::vector<double> t(k);
+    int                 info = 0, query = -1;
+    double              size = 0;
+    dgeqrf_(&n_all, &k, f.data(), &n_all, t.data(), &size, &query, &info);
+    std::vector<double> scratch(std::max<std::size_t>(std::lround(size), 1));
+    const int           lwork = scratch.size();
+    dgeqrf_(
+      &n_all, &k, f.data(), &n_all, t.data(), scratch.data(), &lwork, &info);
+    if (info != 0)
+      return false;
+    double largest = 0, smallest = std::numeric_limits<double>::max();
+    for (int j = 0; j < k; ++j)
+      {
+        largest  = std::max(largest, std::abs(f[j + j * n_all]));
+        smallest = std::min(smallest, std::abs(f[j + j * n_all]));
+      }
+    if (k > 0 && !(smallest > tolerance * largest))
+      return false;
+    m   = m_all;
+    n   = n_all;
+    r   = k;
+    qr  = std::move(f);
+    tau = std::move(t);
+    pivots.clear();
+    for (const int i : kept)
+      pivots.push_back(i + 1);
+    for (const unsigned int i : dropped)
+      pivots.push_back(i + 1);
+    if (work.size() < std::size_t(4 * n))
+      work.resize(4 * n);
+    return true;
+  }
+
   void
   ConstrainedLeastSquares::apply_q(std::vector<double> &B, const int k) const
   {
     int       info  = 0;
-    const int n_ref = std::min(m, n);
+    const int n_ref = tau.size();
     if (work.size() < 64u * k)
       work.resize(64u * k);
     const int lwork = work.size();

@@ -286,16 +286,42 @@ namespace hrcontact
       }
     else
       {
+        // The bilinear map x = v0 + e1 a + e2 b + e3 a b inverted by
+        // Newton's method from the affine guess (a few iterations, in
+        // closed form: deal.II's general inverse was a seventh of the
+        // bound on the Hertz mesh); a point it does not map to round-off
+        // takes deal.II's transform, which throws a named error if it
+        // fails too.
         own.unit.resize(points.size());
-        StaticMappingQ1<2>::mapping.transform_points_real_to_unit_cell(
-          cell, points, own.unit);
-        // A point the batch did not map (marked infinite): the single
-        // point transform, which throws a named error if it fails too.
+        const Tensor<1, 2> e3 = cell->vertex(3) - cell->vertex(1) -
+                                cell->vertex(2) + Tensor<1, 2>(v0);
+        const double tolerance = 1e-14 * cell->diameter();
         for (unsigned int q = 0; q < points.size(); ++q)
-          if (!std::isfinite(own.unit[q][0]))
+          {
+            Point<2> a(J_inv * (points[q] - v0));
+            bool     mapped = false;
+            for (unsigned int k = 0; k < 12 && !mapped; ++k)
+              {
+                const Tensor<1, 2> r =
+                  v0 + e1 * a[0] + e2 * a[1] + e3 * (a[0] * a[1]) - points[q];
+                if (r.norm() <= tolerance)
+                  mapped = true;
+                else
+                  {
+                    Tensor<2, 2> Jk;
+                    for (unsigned int d = 0; d < 2; ++d)
+                      {
+                        Jk[d][0] = e1[d] + e3[d] * a[1];
+                        Jk[d][1] = e2[d] + e3[d] * a[0];
+                      }
+                    a -= invert(Jk) * r;
+                  }
+              }
             own.unit[q] =
-              StaticMappingQ1<2>::mapping.transform_real_to_unit_cell(
-                cell, points[q]);
+              mapped ? a :
+                       StaticMappingQ1<2>::mapping.transform_real_to_unit_cell(
+                         cell, points[q]);
+          }
         tabulate(own);
       }
     // The cell's values once (global lookups cost), then per point the

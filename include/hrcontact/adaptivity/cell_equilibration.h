@@ -148,6 +148,11 @@ namespace hrcontact
     std::vector<double>           low_weights;
     dealii::FullMatrix<double>    A_direct, H_direct;
     ConstrainedLeastSquares       least_squares;
+    /** Per split (triangles, split faces): the constraints' rows the
+     * first such cell found dependent (the rigid motions'), dropped from
+     * the next ones' factorisation. */
+    std::map<std::pair<unsigned int, unsigned int>, std::vector<unsigned int>>
+      dependent_rows;
     std::map<dealii::types::material_id,
              std::pair<dealii::FullMatrix<double>, dealii::FullMatrix<double>>>
            compliance;
