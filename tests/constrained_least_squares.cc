@@ -7,14 +7,15 @@
 // hold where c is in A's range; the KKT condition (H x - g orthogonal to
 // A's null space) must hold; and an energy that is not positive definite
 // on the null space must be refused by name; several data at once
-// (solve_many) must give each one's own x; factor_without (unpivoted QR
-// without the rows factor() found dependent) must give the same x, and
-// refuse a rank-deficient A whose dependent rows it is not told.
+// (solve_many) must give each one's own x; BlockNullSpace (a cell's
+// triangles' own rows first, then the rows that couple them) must give
+// the x of ConstrainedLeastSquares on a random problem of that structure.
 
 #include <deal.II/base/mpi.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <hrcontact/adaptivity/block_null_space.h>
 #include <hrcontact/adaptivity/constrained_least_squares.h>
 
 #include <algorithm>
@@ -162,19 +163,6 @@ compare(const unsigned int m,
     many = std::max({many,
                      std::abs(X[i] - x(i)) / x.linfty_norm(),
                      std::abs(X[n + i] - x2(i)) / x2.linfty_norm()});
-  // Without the rows factor() found dependent, by unpivoted QR: the same
-  // x; without none of them (rank deficient): refused.
-  hrcontact::ConstrainedLeastSquares without;
-  const bool                         reduced =
-    without.factor_without(p.A, least_squares.dependent_rows());
-  Vector<double> x_without;
-  if (reduced)
-    {
-      without.solve(p.H, p.g, p.c, x_without);
-      x_without -= x;
-    }
-  const bool refused =
-    rank == m || !hrcontact::ConstrainedLeastSquares().factor_without(p.A, {});
   std::cout << m << " x " << n << " of rank " << rank
             << ": rank found: " << least_squares.rank()
             << "\n  x as from the SVD (1e-10): "
@@ -184,13 +172,66 @@ compare(const unsigned int m,
             << "\n  N^T (H x - g) = 0 (1e-10): "
             << hrcontact_tests::check(kkt.l2_norm() / p.g.l2_norm(), 1e-10)
             << "\n  the same two at once by solve_many (1e-12): "
-            << hrcontact_tests::check(many, 1e-12)
-            << "\n  the same without the dependent rows (1e-10): "
-            << (reduced ?
-                  hrcontact_tests::check(x_without.l2_norm() / x.l2_norm(),
-                                         1e-10) :
-                  std::string("NO (not factored)"))
-            << "; with them kept, refused: " << (refused ? "yes" : "NO")
+            << hrcontact_tests::check(many, 1e-12) << std::endl;
+}
+
+/** Four blocks of 18 unknowns, 12 rows of each block's own (one of them
+ * dependent on the others, as a split's can be), then 20 rows that couple
+ * neighbouring blocks and 3 that are combinations of all rows (the rigid
+ * motions' dependencies): BlockNullSpace against ConstrainedLeastSquares. */
+void
+blocks(std::mt19937 &random)
+{
+  std::uniform_real_distribution<double> uniform(-1., 1.);
+  Problem            p       = random_problem(72, 72, 72, true, random);
+  const unsigned int n_local = 12, n_coupling = 20;
+  FullMatrix<double> A(4 * n_local + n_coupling + 3, 72);
+  std::vector<std::vector<unsigned int>> local_rows(4);
+  for (unsigned int b = 0; b < 4; ++b)
+    for (unsigned int i = 0; i < n_local; ++i)
+      {
+        const unsigned int row = b * n_local + i;
+        local_rows[b].push_back(row);
+        for (unsigned int j = 0; j < 18; ++j)
+          A(row, 18 * b + j) =
+            i + 1 < n_local ?
+              uniform(random) :
+              A(b * n_local, 18 * b + j) - A(b * n_local + 1, 18 * b + j);
+      }
+  for (unsigned int i = 0; i < n_coupling; ++i)
+    {
+      const unsigned int row = 4 * n_local + i, b = i % 4;
+      for (unsigned int j = 0; j < 18; ++j)
+        {
+          A(row, 18 * b + j)             = uniform(random);
+          A(row, 18 * ((b + 1) % 4) + j) = uniform(random);
+        }
+    }
+  for (unsigned int k = 0; k < 3; ++k)
+    for (unsigned int i = 0; i < 4 * n_local + n_coupling; ++i)
+      {
+        const double w = uniform(random);
+        for (unsigned int j = 0; j < 72; ++j)
+          A(4 * n_local + n_coupling + k, j) += w * A(i, j);
+      }
+  Vector<double> x0(72), c(A.m()), x_block, x_whole;
+  for (auto &v : x0)
+    v = uniform(random);
+  A.vmult(c, x0);
+  hrcontact::BlockNullSpace().solve(A, p.H, p.g, c, local_rows, x_block);
+  hrcontact::ConstrainedLeastSquares whole;
+  whole.factor(A);
+  whole.solve(p.H, p.g, c, x_whole);
+  Vector<double> Ax(A.m());
+  A.vmult(Ax, x_block);
+  Ax -= c;
+  x_block -= x_whole;
+  std::cout << "blocks (4 x 18 unknowns, " << A.m() << " rows, rank "
+            << whole.rank() << "): the whole problem's x (1e-10): "
+            << hrcontact_tests::check(x_block.l2_norm() / x_whole.l2_norm(),
+                                      1e-10)
+            << ", A x = c (1e-12): "
+            << hrcontact_tests::check(Ax.l2_norm() / c.l2_norm(), 1e-12)
             << std::endl;
 }
 
@@ -202,6 +243,7 @@ main(int argc, char **argv)
   compare(72, 72, 69, random);
   compare(108, 108, 104, random);
   compare(40, 72, 40, random);
+  blocks(random);
   // Negative definite blocks of H: the reduced Hessian is not positive
   // definite.
   const Problem p = random_problem(72, 72, 60, false, random);

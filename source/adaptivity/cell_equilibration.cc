@@ -478,17 +478,19 @@ namespace hrcontact
     tabulate(split, points, direct);
     constraint_data(cell, split, points, weights, direct, c);
     energy_gradient(direct, body, nonlinear, n_tri, g);
-    // The split's dependent rows are structural: from its second cell on,
-    // dropped before an unpivoted QR (the pivoted one where the rest is
-    // not of full rank).
-    std::vector<unsigned int> &dropped =
-      dependent_rows[{n_tri, split.split_faces}];
-    if (dropped.empty() || !least_squares.factor_without(A_direct, dropped))
+    // Each triangle's own rows (its equilibrium, its outer edge's
+    // traction) first, then the inner edges' jumps (BlockNullSpace).
+    const unsigned int n_eq = 2 * lower.monomials.size(),
+                       n_ed = 2 * (degree + 1);
+    std::vector<std::vector<unsigned int>> local_rows(n_tri);
+    for (unsigned int k = 0; k < n_tri; ++k)
       {
-        least_squares.factor(A_direct);
-        dropped = least_squares.dependent_rows();
+        for (unsigned int i = 0; i < n_eq; ++i)
+          local_rows[k].push_back(k * n_eq + i);
+        for (unsigned int i = 0; i < n_ed; ++i)
+          local_rows[k].push_back(n_tri * n_eq + k * n_ed + i);
       }
-    least_squares.solve(H_direct, g, c, x);
+    block_solve.solve(A_direct, H_direct, g, c, local_rows, x);
     Ax.reinit(c.size());
     A_direct.vmult(Ax, x);
     Ax -= c;

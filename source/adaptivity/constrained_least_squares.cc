@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace hrcontact
 {
@@ -42,69 +41,6 @@ namespace hrcontact
     const double largest = std::abs(qr[0]);
     while (r < std::min(m, n) && std::abs(qr[r + r * n]) > tolerance * largest)
       ++r;
-  }
-
-  std::vector<unsigned int>
-  ConstrainedLeastSquares::dependent_rows() const
-  {
-    std::vector<unsigned int> rows;
-    for (int i = r; i < m; ++i)
-      rows.push_back(pivots[i] - 1);
-    return rows;
-  }
-
-  bool
-  ConstrainedLeastSquares::factor_without(
-    const FullMatrix<double>        &A,
-    const std::vector<unsigned int> &dropped,
-    const double                     tolerance)
-  {
-    const int         m_all = A.m(), n_all = A.n();
-    std::vector<bool> drop(m_all, false);
-    for (const unsigned int i : dropped)
-      drop[i] = true;
-    std::vector<int> kept;
-    for (int i = 0; i < m_all; ++i)
-      if (!drop[i])
-        kept.push_back(i);
-    const int k = kept.size();
-    if (k > n_all)
-      return false;
-    // The kept rows of A are the columns of A^T (n x k, column-major).
-    std::vector<double> f(std::size_t(n_all) * k);
-    for (int j = 0; j < k; ++j)
-      std::copy(&A(kept[j], 0), &A(kept[j], 0) + n_all, f.begin() + j * n_all);
-    std::vector<double> t(k);
-    int                 info = 0, query = -1;
-    double              size = 0;
-    dgeqrf_(&n_all, &k, f.data(), &n_all, t.data(), &size, &query, &info);
-    std::vector<double> scratch(std::max<std::size_t>(std::lround(size), 1));
-    const int           lwork = scratch.size();
-    dgeqrf_(
-      &n_all, &k, f.data(), &n_all, t.data(), scratch.data(), &lwork, &info);
-    if (info != 0)
-      return false;
-    double largest = 0, smallest = std::numeric_limits<double>::max();
-    for (int j = 0; j < k; ++j)
-      {
-        largest  = std::max(largest, std::abs(f[j + j * n_all]));
-        smallest = std::min(smallest, std::abs(f[j + j * n_all]));
-      }
-    if (k > 0 && !(smallest > tolerance * largest))
-      return false;
-    m   = m_all;
-    n   = n_all;
-    r   = k;
-    qr  = std::move(f);
-    tau = std::move(t);
-    pivots.clear();
-    for (const int i : kept)
-      pivots.push_back(i + 1);
-    for (const unsigned int i : dropped)
-      pivots.push_back(i + 1);
-    if (work.size() < std::size_t(4 * n))
-      work.resize(4 * n);
-    return true;
   }
 
   void
@@ -258,23 +194,46 @@ namespace hrcontact
   }
 
   void
-  ConstrainedLeastSquares::solve(const Vector<double> &g,
-                                 const Vector<double> &c,
-                                 Vector<double>       &x) const
+  ConstrainedLeastSquares::row_space_solution(const Vector<double> &c,
+                                              Vector<double>       &x) const
   {
     // R11^T w_1 = (Pi^T c)_1 by forward substitution (R is the upper
     // triangle of qr); x_1 = Q (w_1, 0).
     std::vector<double> w(n, 0.);
     for (int i = 0; i < r; ++i)
       w[i] = c(pivots[i] - 1);
-    const int    one  = 1;
-    const double plus = 1, minus = -1, zero = 0;
-    x.reinit(n);
+    const int one = 1;
     if (r > 0)
       dtrsv_("U", "T", "N", &r, qr.data(), &n, w.data(), &one);
     apply_q(w, 1);
+    x.reinit(n);
     std::copy(w.begin(), w.end(), x.begin());
-    const int k = n - r;
+  }
+
+  void
+  ConstrainedLeastSquares::null_space(FullMatrix<double> &N) const
+  {
+    const int           k = n - r;
+    std::vector<double> B(std::size_t(n) * k, 0.);
+    for (int j = 0; j < k; ++j)
+      B[r + j + j * n] = 1;
+    if (k > 0)
+      apply_q(B, k);
+    N.reinit(n, k);
+    for (int j = 0; j < k; ++j)
+      for (int i = 0; i < n; ++i)
+        N(i, j) = B[i + j * n];
+  }
+
+  void
+  ConstrainedLeastSquares::solve(const Vector<double> &g,
+                                 const Vector<double> &c,
+                                 Vector<double>       &x) const
+  {
+    row_space_solution(c, x);
+    const int    one  = 1;
+    const double plus = 1, minus = -1, zero = 0;
+    const int    k = n - r;
     if (k == 0)
       return;
     // The null space's part: K z = Q_2^T g - (H Q_2)^T x_1 (H symmetric).

@@ -4,6 +4,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <hrcontact/adaptivity/block_null_space.h>
 #include <hrcontact/adaptivity/constrained_least_squares.h>
 #include <hrcontact/adaptivity/face_tractions.h>
 #include <hrcontact/adaptivity/triangle_split.h>
@@ -147,12 +148,8 @@ namespace hrcontact
     std::vector<dealii::Point<2>> low_points;
     std::vector<double>           low_weights;
     dealii::FullMatrix<double>    A_direct, H_direct;
-    ConstrainedLeastSquares       least_squares;
-    /** Per split (triangles, split faces): the constraints' rows the
-     * first such cell found dependent (the rigid motions'), dropped from
-     * the next ones' factorisation. */
-    std::map<std::pair<unsigned int, unsigned int>, std::vector<unsigned int>>
-      dependent_rows;
+    /** The direct path's solve, triangle by triangle first. */
+    BlockNullSpace block_solve;
     std::map<dealii::types::material_id,
              std::pair<dealii::FullMatrix<double>, dealii::FullMatrix<double>>>
            compliance;

@@ -27,20 +27,15 @@ namespace hrcontact
     void
     factor(const dealii::FullMatrix<double> &A, const double tolerance = 1e-11);
 
-    /** The rows factor() found dependent (their data ignored). */
-    std::vector<unsigned int>
-    dependent_rows() const;
-    /**
-     * Factor A without the rows @p dropped, known to be dependent (a cell
-     * of the same split as one factor() was run on: the rigid motions'
-     * dependencies are structural), by unpivoted QR (LAPACK's blocked
-     * dgeqrf, about twice as fast as dgeqp3 at 72 x 72). False, with
-     * nothing factored, if the rest is not of full rank to @p tolerance.
-     */
-    bool
-    factor_without(const dealii::FullMatrix<double> &A,
-                   const std::vector<unsigned int>  &dropped,
-                   const double                      tolerance = 1e-11);
+    /** The solution of A x = c in A's row space (the least-norm one),
+     * after factor(). */
+    void
+    row_space_solution(const dealii::Vector<double> &c,
+                       dealii::Vector<double>       &x) const;
+    /** An orthonormal basis of A's null space (n x (n - rank)), after
+     * factor(). */
+    void
+    null_space(dealii::FullMatrix<double> &N) const;
 
     /** The minimiser; where c is not in A's range, the dependent rows'
      * data are ignored (the caller measures A x - c). */

@@ -84,15 +84,6 @@ extern "C"
           const int    *ldb,
           int          *info);
   void
-  dgeqrf_(const int *m,
-          const int *n,
-          double    *a,
-          const int *lda,
-          double    *tau,
-          double    *work,
-          const int *lwork,
-          int       *info);
-  void
   dgeqp3_(const int *m,
           const int *n,
           double    *a,
