@@ -83,22 +83,9 @@ namespace hrcontact
                                       const int                  k,
                                       std::vector<double>       &X_out) const
   {
-    X_out.assign(n * k, 0.);
-    // The row-space part: R_11^T W = (Pi^T C)_r and X_1 = Q (W; 0), all
-    // columns at once.
-    std::vector<double> W(r * k);
-    for (int j = 0; j < k; ++j)
-      for (int i = 0; i < r; ++i)
-        W[i + j * r] = C[pivots[i] - 1 + j * m];
+    row_space_solutions(C, k, X_out);
     const double plus = 1, minus = -1, zero = 0;
-    if (r > 0)
-      dtrsm_("L", "U", "T", "N", &r, &k, &plus, qr.data(), &n, W.data(), &r);
-    for (int j = 0; j < k; ++j)
-      std::copy(W.begin() + j * r,
-                W.begin() + (j + 1) * r,
-                X_out.begin() + j * n);
-    apply_q(X_out, k);
-    const int n_null = n - r;
+    const int    n_null = n - r;
     if (n_null == 0)
       return;
     std::vector<double> Z(n_null * k);
@@ -208,6 +195,27 @@ namespace hrcontact
     apply_q(w, 1);
     x.reinit(n);
     std::copy(w.begin(), w.end(), x.begin());
+  }
+
+  void
+  ConstrainedLeastSquares::row_space_solutions(const std::vector<double> &C,
+                                               const int                  k,
+                                               std::vector<double> &X) const
+  {
+    // R_11^T W = (Pi^T C)_r and X = Q (W; 0), all columns at once.
+    X.assign(std::size_t(n) * k, 0.);
+    std::vector<double> W(std::size_t(r) * k);
+    for (int j = 0; j < k; ++j)
+      for (int i = 0; i < r; ++i)
+        W[i + j * r] = C[pivots[i] - 1 + std::size_t(j) * m];
+    const double plus = 1;
+    if (r > 0)
+      dtrsm_("L", "U", "T", "N", &r, &k, &plus, qr.data(), &n, W.data(), &r);
+    for (int j = 0; j < k; ++j)
+      std::copy(W.begin() + std::size_t(j) * r,
+                W.begin() + std::size_t(j + 1) * r,
+                X.begin() + std::size_t(j) * n);
+    apply_q(X, k);
   }
 
   void

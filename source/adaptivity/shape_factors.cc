@@ -8,14 +8,15 @@ namespace hrcontact
 {
   using namespace dealii;
 
-  ShapeFactors::ShapeFactors(FullMatrix<double>      &&A_,
-                             const FullMatrix<double> &H,
-                             const double              h)
+  ShapeFactors::ShapeFactors(
+    FullMatrix<double>                          &&A_,
+    const FullMatrix<double>                     &H,
+    const double                                  h,
+    const std::vector<std::vector<unsigned int>> &local_rows)
     : h(h)
     , A(std::move(A_))
   {
-    least_squares.factor(A);
-    least_squares.prepare(H);
+    least_squares.factor(A, H, local_rows);
   }
 
   void

@@ -32,6 +32,11 @@ namespace hrcontact
     void
     row_space_solution(const dealii::Vector<double> &c,
                        dealii::Vector<double>       &x) const;
+    /** The same for k data at once (C: m x k, X: n x k, column-major). */
+    void
+    row_space_solutions(const std::vector<double> &C,
+                        const int                  k,
+                        std::vector<double>       &X) const;
     /** An orthonormal basis of A's null space (n x (n - rank)), after
      * factor(). */
     void

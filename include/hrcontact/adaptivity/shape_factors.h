@@ -3,7 +3,7 @@
 
 #include <deal.II/lac/full_matrix.h>
 
-#include <hrcontact/adaptivity/constrained_least_squares.h>
+#include <hrcontact/adaptivity/block_null_space.h>
 
 #include <vector>
 
@@ -19,9 +19,12 @@ namespace hrcontact
   class ShapeFactors
   {
   public:
-    ShapeFactors(dealii::FullMatrix<double>      &&A,
-                 const dealii::FullMatrix<double> &H,
-                 const double                      h);
+    /** @p local_rows: per block of unknowns (a tetrahedron) the rows that
+     * touch it only (BlockNullSpace). */
+    ShapeFactors(dealii::FullMatrix<double>                  &&A,
+                 const dealii::FullMatrix<double>             &H,
+                 const double                                  h,
+                 const std::vector<std::vector<unsigned int>> &local_rows);
 
     /** The size of the cell the factors were computed on. */
     double h;
@@ -50,7 +53,7 @@ namespace hrcontact
 
   private:
     dealii::FullMatrix<double> A;
-    ConstrainedLeastSquares    least_squares;
+    BlockNullSpace             least_squares;
   };
 } // namespace hrcontact
 
