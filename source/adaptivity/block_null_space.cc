@@ -203,6 +203,22 @@ namespace hrcontact
     std::copy(X.begin(), X.end(), x.begin());
   }
 
+  std::vector<std::vector<unsigned int>>
+  BlockNullSpace::own_rows(const unsigned int n_blocks,
+                           const unsigned int n_first,
+                           const unsigned int n_second)
+  {
+    std::vector<std::vector<unsigned int>> rows(n_blocks);
+    for (unsigned int k = 0; k < n_blocks; ++k)
+      {
+        for (unsigned int i = 0; i < n_first; ++i)
+          rows[k].push_back(k * n_first + i);
+        for (unsigned int i = 0; i < n_second; ++i)
+          rows[k].push_back(n_blocks * n_first + k * n_second + i);
+      }
+    return rows;
+  }
+
   unsigned int
   BlockNullSpace::rank() const
   {

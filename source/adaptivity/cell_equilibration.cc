@@ -480,17 +480,14 @@ namespace hrcontact
     energy_gradient(direct, body, nonlinear, n_tri, g);
     // Each triangle's own rows (its equilibrium, its outer edge's
     // traction) first, then the inner edges' jumps (BlockNullSpace).
-    const unsigned int n_eq = 2 * lower.monomials.size(),
-                       n_ed = 2 * (degree + 1);
-    std::vector<std::vector<unsigned int>> local_rows(n_tri);
-    for (unsigned int k = 0; k < n_tri; ++k)
-      {
-        for (unsigned int i = 0; i < n_eq; ++i)
-          local_rows[k].push_back(k * n_eq + i);
-        for (unsigned int i = 0; i < n_ed; ++i)
-          local_rows[k].push_back(n_tri * n_eq + k * n_ed + i);
-      }
-    block_solve.solve(A_direct, H_direct, g, c, local_rows, x);
+    block_solve.solve(A_direct,
+                      H_direct,
+                      g,
+                      c,
+                      BlockNullSpace::own_rows(n_tri,
+                                               2 * lower.monomials.size(),
+                                               2 * (degree + 1)),
+                      x);
     Ax.reinit(c.size());
     A_direct.vmult(Ax, x);
     Ax -= c;

@@ -418,18 +418,14 @@ namespace hrcontact
         energy(target, &H, cell.g0, cell.targets);
         // Each tetrahedron's own rows: its equilibrium, its outer
         // triangle's traction (constraints()' order).
-        const unsigned int n_eq = 3 * lower.size(), n_tr = 3 * 6;
-        std::vector<std::vector<unsigned int>> local_rows(n_tetrahedra);
-        for (unsigned int k = 0; k < n_tetrahedra; ++k)
-          {
-            for (unsigned int i = 0; i < n_eq; ++i)
-              local_rows[k].push_back(k * n_eq + i);
-            for (unsigned int i = 0; i < n_tr; ++i)
-              local_rows[k].push_back(n_tetrahedra * n_eq + k * n_tr + i);
-          }
         it = shapes
                .emplace(shape_key(vertices),
-                        ShapeFactors(std::move(A), H, G.h, local_rows))
+                        ShapeFactors(std::move(A),
+                                     H,
+                                     G.h,
+                                     BlockNullSpace::own_rows(n_tetrahedra,
+                                                              3 * lower.size(),
+                                                              3 * 6)))
                .first;
       }
     else

@@ -48,6 +48,15 @@ namespace hrcontact
           const std::vector<std::vector<unsigned int>> &local_rows,
           dealii::Vector<double>                       &x);
 
+    /** The own rows of @p n_blocks blocks where the constraints list
+     * first @p n_first rows per block (equilibrium), then @p n_second per
+     * block (its outer face's traction), then the coupling rows: the
+     * order of both splits' constraints. */
+    static std::vector<std::vector<unsigned int>>
+    own_rows(const unsigned int n_blocks,
+             const unsigned int n_first,
+             const unsigned int n_second);
+
     /** The rank of A (the blocks' and the coupling rows'). */
     unsigned int
     rank() const;
