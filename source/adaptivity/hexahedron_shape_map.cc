@@ -1,4 +1,5 @@
 #include <deal.II/base/geometry_info.h>
+#include <deal.II/base/quadrature_lib.h>
 
 #include <hrcontact/adaptivity/hexahedron_equilibration.h>
 #include <hrcontact/adaptivity/hexahedron_shape_map.h>
@@ -12,11 +13,14 @@ namespace hrcontact
 
   namespace
   {
-    /** The 3-point Gauss rule on [0, 1]. */
-    constexpr double gauss3[3]   = {0.5 - 0.3872983346207417,
-                                    0.5,
-                                    0.5 + 0.3872983346207417};
-    constexpr double weights3[3] = {5. / 18, 8. / 18, 5. / 18};
+    /** deal.II's Gauss rules on [0, 1]: 3 points on a face, 2 in the cell
+     * (the vertex problems' rules). */
+    const QGauss<1> &
+    gauss(const unsigned int n)
+    {
+      static const QGauss<1> two(2), three(3);
+      return n == 2 ? two : three;
+    }
 
     /** The P2 basis of a face at (a, b), centred. */
     std::array<double, 6>
@@ -36,8 +40,9 @@ namespace hrcontact
         for (unsigned int j = 0; j < 3; ++j)
           for (unsigned int i = 0; i < 3; ++i)
             {
-              const auto   q = face_basis(gauss3[i], gauss3[j]);
-              const double w = weights3[i] * weights3[j];
+              const QGauss<1> &g = gauss(3);
+              const auto       q = face_basis(g.point(i)[0], g.point(j)[0]);
+              const double     w = g.weight(i) * g.weight(j);
               for (unsigned int r = 0; r < 6; ++r)
                 {
                   B(r, 3 * j + i) = w * q[r];
@@ -217,7 +222,8 @@ namespace hrcontact
     std::array<Point<3>, 9> points;
     for (unsigned int j = 0; j < 3; ++j)
       for (unsigned int i = 0; i < 3; ++i)
-        points[3 * j + i] = p0 + gauss3[i] * d1 + gauss3[j] * d2;
+        points[3 * j + i] =
+          p0 + gauss(3).point(i)[0] * d1 + gauss(3).point(j)[0] * d2;
     return points;
   }
 
@@ -241,13 +247,12 @@ namespace hrcontact
   std::array<Point<3>, 8>
   HexahedronShapeMap::cell_points(const std::array<Point<3>, 8> &v)
   {
-    const double g[2] = {0.5 - 0.5 / std::sqrt(3.), 0.5 + 0.5 / std::sqrt(3.)};
     std::array<Point<3>, 8> points;
     for (unsigned int q = 0; q < 8; ++q)
       {
         points[q] = v[0];
         for (unsigned int d = 0; d < 3; ++d)
-          points[q] += g[(q >> d) & 1u] * (v[1u << d] - v[0]);
+          points[q] += gauss(2).point((q >> d) & 1u)[0] * (v[1u << d] - v[0]);
       }
     return points;
   }
@@ -259,8 +264,7 @@ namespace hrcontact
     double                            *d)
   {
     // The basis 1, xi_d - 1/2 is orthogonal on the rule (its mass matrix
-    // 1, 1/12, 1/12, 1/12 times the volume).
-    const double offset = 0.5 / std::sqrt(3.);
+    // 1, 1/12, 1/12, 1/12 times the volume; the weights 1/8).
     for (unsigned int c = 0; c < 3; ++c)
       {
         double m[4] = {0, 0, 0, 0};
@@ -268,8 +272,9 @@ namespace hrcontact
           {
             m[0] += values[q][c] / 8;
             for (unsigned int dir = 0; dir < 3; ++dir)
-              m[1 + dir] +=
-                12. / 8 * (((q >> dir) & 1u) ? offset : -offset) * values[q][c];
+              m[1 + dir] += 12. / 8 *
+                            (gauss(2).point((q >> dir) & 1u)[0] - 0.5) *
+                            values[q][c];
           }
         for (unsigned int l = 0; l < 4; ++l)
           d[force_index(c, l)] = scale * m[l];
