@@ -36,6 +36,29 @@ namespace hrcontact
       return Tensor<1, 2>(
         {row.direction_component(0), row.direction_component(1)});
     }
+
+    /** A contact pair's row whose master side is one node at the slave's
+     * (its direction there -n, every other master node's zero): that node;
+     * else invalid (non-matching meshes, where the relative displacement
+     * has a kink inside a face). */
+    unsigned int
+    matched_master(const EquilibriumSystem &sys, const EquilibriumRow &row)
+    {
+      std::map<unsigned int, Tensor<1, 2>> at;
+      for (unsigned int i = 0; i < row.combination.size(); ++i)
+        if (const unsigned int node = sys.dof_node(row.combination[i].first);
+            node != row.node)
+          at[node][sys.dof_component(row.combination[i].first)] +=
+            row.direction_component(i);
+      const Tensor<1, 2> n      = row_direction(row);
+      unsigned int       master = numbers::invalid_unsigned_int;
+      for (const auto &[m, d] : at)
+        if ((d + n).norm() < 1e-10 && master == numbers::invalid_unsigned_int)
+          master = m;
+        else if (d.norm() > 1e-10)
+          return numbers::invalid_unsigned_int;
+      return master;
+    }
   } // namespace
 
   std::string
@@ -45,10 +68,14 @@ namespace hrcontact
     for (const unsigned int r : sys.contact_rows)
       {
         const EquilibriumRow &row = sys.rows[r];
-        if (!row.unilateral || row.law || row.obstacle < 0)
-          return "only unilateral contact with straight obstacles "
-                 "(Contact/Obstacles) so far: no bilateral rows, constraint "
-                 "laws or contact pairs";
+        if (!row.unilateral || row.law)
+          return "only unilateral contact so far: no bilateral rows or "
+                 "constraint laws";
+        if (row.obstacle < 0 &&
+            matched_master(sys, row) == numbers::invalid_unsigned_int)
+          return "contact pairs only where each slave node coincides with a "
+                 "master node so far (matched meshes; not a slave node "
+                 "between two master nodes)";
         if (++rows_at_node[row.node] > 1)
           return "a node on two obstacles (a corner between them)";
       }
@@ -63,20 +90,45 @@ namespace hrcontact
     const EquilibriumSystem             &sys = results.system;
     const unsigned int                   nq  = sys.contact_rows.size();
     std::map<unsigned int, unsigned int> row_of_node;
+    std::vector<unsigned int> master_node(nq, numbers::invalid_unsigned_int);
+    bool                      pairs = false;
     for (unsigned int k = 0; k < nq; ++k)
-      row_of_node[sys.rows[sys.contact_rows[k]].node] = k;
+      {
+        const EquilibriumRow &row = sys.rows[sys.contact_rows[k]];
+        row_of_node[row.node]     = k;
+        if (row.obstacle < 0)
+          {
+            master_node[k] = matched_master(sys, row);
+            pairs          = true;
+          }
+      }
+    // A pair row's master node may be on no cell of this process.
+    const std::vector<double> pair_w =
+      pairs ? row_displacements(results) : std::vector<double>();
     std::vector<double> penetration(nq, 0.);
     const auto          gap =
       [&](const auto &face, const unsigned int v, const unsigned int k) {
         const EquilibriumRow &row = sys.rows[sys.contact_rows[k]];
         double                w   = 0;
-        for (unsigned int c = 0; c < 2; ++c)
-          w += row.direction_component(c) *
-               results.displacement(face->vertex_dof_index(v, c));
+        if (row.obstacle < 0)
+          w = pair_w[k];
+        else
+          for (unsigned int c = 0; c < 2; ++c)
+            w += row.direction_component(c) *
+                 results.displacement(face->vertex_dof_index(v, c));
         penetration[k]      = std::max(0., w - row.value);
         largest_penetration = std::max(largest_penetration, penetration[k]);
         return std::max(0., row.value - w);
       };
+    // Both rows of a face: the same obstacle, or pair rows of the same
+    // normal (a straight interface).
+    const auto same_kind = [&](const unsigned int a, const unsigned int b) {
+      const EquilibriumRow &r = sys.rows[sys.contact_rows[a]],
+                           &s = sys.rows[sys.contact_rows[b]];
+      return r.obstacle == s.obstacle &&
+             (r.obstacle >= 0 ||
+              (row_direction(r) - row_direction(s)).norm() < 1e-12);
+    };
     for (const auto &cell :
          results.spaces.dof_handler_displacement.active_cell_iterators())
       if (!cell->is_artificial())
@@ -87,8 +139,7 @@ namespace hrcontact
               const auto a = row_of_node.find(face->vertex_dof_index(0, 0) / 2),
                          b = row_of_node.find(face->vertex_dof_index(1, 0) / 2);
               if (a == row_of_node.end() || b == row_of_node.end() ||
-                  sys.rows[sys.contact_rows[a->second]].obstacle !=
-                    sys.rows[sys.contact_rows[b->second]].obstacle)
+                  !same_kind(a->second, b->second))
                 continue;
               Face &c = faces[face->index()];
               c.row   = {{a->second, b->second}};
@@ -96,6 +147,8 @@ namespace hrcontact
                 row_direction(sys.rows[sys.contact_rows[a->second]]);
               c.gap = {{gap(face, 0, a->second), gap(face, 1, b->second)}};
             }
+    if (pairs)
+      find_master_faces(results, master_node);
     share_reactions(results);
     lift(results, penetration);
   }
@@ -111,7 +164,8 @@ namespace hrcontact
          results.spaces.dof_handler_displacement.active_cell_iterators())
       if (results.partition.owned_cell[cell->active_cell_index()])
         for (const unsigned int f : cell->face_indices())
-          if (const Face *c = find(cell->face(f)->index()))
+          if (const Face *c = find(cell->face(f)->index());
+              c != nullptr && !c->master)
             own.insert(own.end(),
                        {double(c->row[0]),
                         double(c->row[1]),
@@ -124,7 +178,8 @@ namespace hrcontact
     for (const auto &part :
          Utilities::MPI::all_gather(results.partition.communicator, own))
       for (unsigned int i = 0; i + 6 < part.size(); i += 7)
-        all.push_back({{(unsigned int)part[i], (unsigned int)part[i + 1]},
+        all.push_back({std::array<unsigned int, 2>{
+                         {(unsigned int)part[i], (unsigned int)part[i + 1]}},
                        part[i + 2],
                        {{Point<2>(part[i + 3], part[i + 4]),
                          Point<2>(part[i + 5], part[i + 6])}}});
@@ -254,17 +309,29 @@ namespace hrcontact
 
     // Each local face's quadratic: linear where the end moments allow it,
     // else the Bernstein pair (1-s)^2, s^2 (ratio up to 3).
+    // (A master face takes its slave face's, whose vertices may be in the
+    // other order.)
+    const auto slave_face = [&](const std::array<unsigned int, 2> &row) {
+      const auto it = std::lower_bound(all.begin(),
+                                       all.end(),
+                                       row,
+                                       [](const auto &g, const auto &r) {
+                                         return g.row < r;
+                                       });
+      return it != all.end() && it->row == row ? &*it : nullptr;
+    };
     for (auto &[line, c] : faces)
       {
-        const auto it = std::lower_bound(all.begin(),
-                                         all.end(),
-                                         c.row,
-                                         [](const auto &g, const auto &row) {
-                                           return g.row < row;
-                                         });
-        AssertThrow(it != all.end() && it->row == c.row,
+        const GlobalFace *it = slave_face(c.row);
+        const GlobalFace *reverse =
+          c.master && it == nullptr ?
+            slave_face(std::array<unsigned int, 2>{{c.row[1], c.row[0]}}) :
+            nullptr;
+        AssertThrow(it != nullptr || reverse != nullptr,
                     ExcMessage("Error bound: a contact face is missing."));
-        const double a = it->share[0], b = it->share[1], L = it->length;
+        const double a = it ? it->share[0] : reverse->share[1],
+                     b = it ? it->share[1] : reverse->share[0],
+                     L = it ? it->length : reverse->length;
         if (2 * a >= b && 2 * b >= a)
           {
             const double q0 = -2 * (2 * a - b) / L, q1 = -2 * (2 * b - a) / L;
@@ -351,6 +418,60 @@ namespace hrcontact
                 lift_energy_squared += e[i] * C(i, j) * e[j] * fv.JxW(q);
           }
       }
+  }
+
+  void
+  ContactTractions::find_master_faces(
+    const Results<2>                &results,
+    const std::vector<unsigned int> &master_node)
+  {
+    const EquilibriumSystem             &sys = results.system;
+    std::map<unsigned int, unsigned int> row_of_master;
+    for (unsigned int k = 0; k < master_node.size(); ++k)
+      if (master_node[k] != numbers::invalid_unsigned_int)
+        row_of_master[master_node[k]] = k;
+    for (const auto &cell :
+         results.spaces.dof_handler_displacement.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const auto face = cell->face(f);
+              const auto a =
+                row_of_master.find(face->vertex_dof_index(0, 0) / 2);
+              const auto b =
+                row_of_master.find(face->vertex_dof_index(1, 0) / 2);
+              if (a == row_of_master.end() || b == row_of_master.end())
+                continue;
+              const Tensor<1, 2> n =
+                row_direction(sys.rows[sys.contact_rows[a->second]]);
+              if ((n - row_direction(sys.rows[sys.contact_rows[b->second]]))
+                    .norm() > 1e-12)
+                continue;
+              Face &c     = faces[face->index()];
+              c.row       = {{a->second, b->second}};
+              c.direction = -n;
+              c.master    = true;
+            }
+  }
+
+  std::vector<double>
+  ContactTractions::row_displacements(const Results<2> &results)
+  {
+    const EquilibriumSystem &sys = results.system;
+    std::vector<double>      w(sys.contact_rows.size(), 0.);
+    for (unsigned int k = 0; k < w.size(); ++k)
+      {
+        const EquilibriumRow &row = sys.rows[sys.contact_rows[k]];
+        for (unsigned int i = 0; i < row.combination.size(); ++i)
+          if (results.partition.owned.is_element(row.combination[i].first))
+            w[k] += row.direction_component(i) *
+                    results.displacement(row.combination[i].first);
+      }
+    const ArrayView<const double> values(w.data(), w.size());
+    const ArrayView<double>       sums(w.data(), w.size());
+    Utilities::MPI::sum(values, results.partition.communicator, sums);
+    return w;
   }
 
   const ContactTractions::Face *

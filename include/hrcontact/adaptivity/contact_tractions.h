@@ -29,6 +29,13 @@ namespace hrcontact
    * of the same straight obstacle (2D; Contact/Obstacles): the gap to a
    * straight obstacle and the Q1 normal displacement are linear along it,
    * so v = u_h meets the constraint on the face when it does at the nodes.
+   * A contact pair (Contact/Contact pairs) is covered where each slave node
+   * coincides with a master node (matched meshes: the row is n . (u_s -
+   * u_m) <= g) and both rows of a slave face have the same normal: the
+   * slave face carries tau n = q n, the master face between the two master
+   * nodes the opposite traction -q n (action and reaction, pointwise), and
+   * the relative normal displacement is linear along the pair of faces. The
+   * contact term is the slave face's.
    * Where a node penetrates (the contact iteration's tolerance), v lifts
    * it by its penetration along d with its hat function; the bound then
    * adds that lift's energy (lift_energy, triangle inequality).
@@ -55,8 +62,12 @@ namespace hrcontact
       std::array<double, 3> bernstein{};
       /** The obstacle's direction d (tau n = q d). */
       dealii::Tensor<1, 2> direction;
-      /** v's gap g - v.d at the two vertices (>= 0). */
+      /** v's gap g - v.d at the two vertices (>= 0; 0 on a master face,
+       * whose pair's slave face carries the contact term). */
       std::array<double, 2> gap{};
+      /** The master side of a contact pair: tau n = -q n, with n (the
+       * direction) already turned. */
+      bool master = false;
     };
 
     /** Every contact face of this process's own and ghost cells. */
@@ -122,6 +133,15 @@ namespace hrcontact
     share_reactions(const Results<2> &results);
     void
     lift(const Results<2> &results, const std::vector<double> &penetration);
+    /** The master faces of contact pairs: the faces between the master
+     * nodes of two rows of the same normal. */
+    void
+    find_master_faces(const Results<2>                &results,
+                      const std::vector<unsigned int> &master_node);
+    /** d . u_h of every contact row (complete on every process: each sums
+     * the entries of its own dofs). */
+    static std::vector<double>
+    row_displacements(const Results<2> &results);
   };
 } // namespace hrcontact
 

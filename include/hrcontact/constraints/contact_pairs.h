@@ -73,6 +73,14 @@ namespace hrcontact
             const EquilibriumSystem    &system) const override;
     void
     couple_rows(EquilibriumSystem &system) const override;
+    /** Where each slave node coincides with a master node (matched meshes,
+     * straight interface): the error bound's ContactTractions::not_covered
+     * checks that row by row and refuses the rest by name. */
+    bool
+    holds_pointwise_from_nodes() const override
+    {
+      return true;
+    }
 
     /** One pair as the `.prm` gives it. */
     struct Pair

@@ -1,0 +1,162 @@
+// The guaranteed error bound with a contact pair between two elastic bodies
+// (doc/error-bounds.md, ContactTractions):
+// - parameters/two-body-signorini-error-bound.prm, whose exact solution is
+//   known, at 4 x 4 to 16 x 16 cells per body: effectivity in [1, 2], the
+//   reconstruction admissible to 1e-9 (the slave faces carry the nodal
+//   reactions compressively and the master faces their opposite), the
+//   inequality |u - u_h|^2 + |sigma - tau|^2 <= eta^2 holds;
+// - an independent check: each body of that scene solves the one-body
+//   Signorini problem of signorini-error-bound.prm (the lower body, half as
+//   stiff, with twice the mirror image's displacement and the same
+//   stresses), so its bound must be sqrt(3) times that scene's bound on the
+//   rigid plane (the lower body's energies are twice the upper's);
+// - mortar rows (matched meshes: the same rows) give the same bound;
+// - the upper body's displacement pushed into the lower body: lifted back,
+//   the bound grows and stays above the pushed field's true error;
+// - meshes that do not match across the pair are refused by name.
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <hrcontact/adaptivity/equilibrated_stress.h>
+#include <hrcontact/core/input.h>
+
+#include "tests.h"
+
+using namespace hrcontact_tests;
+
+namespace
+{
+  std::string
+  two_bodies(const unsigned int refinements, const std::string &extra = "")
+  {
+    return scene_at_refinement("two-body-signorini-error-bound",
+                               2,
+                               refinements) +
+           extra;
+  }
+
+  const std::string exact_stress =
+    "if(x<x0, -b*lam*(x-x0)^2, -6*k*abs(y)*(lam+2*mu)*(x-x0)); if(x<x0, "
+    "-b*(lam+2*mu)*(x-x0)^2, -6*k*lam*abs(y)*(x-x0)); if(x<x0, "
+    "-2*b*mu*y*(x-x0), 0)";
+
+  // The bound of @p results and its true error.
+  struct Bound
+  {
+    double eta, error, slack, lift, penetration;
+  };
+  Bound
+  bound_of(const hrcontact::Results<2> &results)
+  {
+    hrcontact::EquilibratedStress<2> tau(results);
+    tau.compute();
+    const auto   reference = hrcontact::make_function<2>(exact_stress,
+                                                       3,
+                                                       results.scene.constants,
+                                                       "test");
+    const auto   c         = tau.compare(*reference);
+    const double eta       = tau.bound();
+    return {eta,
+            std::sqrt(c.displacement_error_squared),
+            (c.displacement_error_squared + c.reconstruction_error_squared) /
+                (eta * eta) -
+              1,
+            tau.lift,
+            tau.largest_penetration};
+  }
+} // namespace
+
+int
+main()
+{
+  for (const unsigned int r : {1u, 2u, 3u})
+    {
+      const auto         problem = solve_from_text<2>(two_bodies(r));
+      std::ostringstream quiet;
+      problem->output_results(quiet);
+      const auto &s = problem->results().summary;
+      const Bound b = bound_of(problem->results());
+      const auto  one =
+        solve_from_text<2>(scene_at_refinement("signorini-error-bound", 2, r));
+      one->output_results(quiet);
+      const double eff = s.get_double("effectivity_index");
+      std::cout
+        << (2u << r) << " x " << (2u << r)
+        << " cells per body: effectivity in [1, 2]: "
+        << (eff >= 1 && eff <= 2 ? "yes" : "NO") << " (" << std::setprecision(3)
+        << eff << "), tau admissible to 1e-9: "
+        << check(std::max(s.get_double("error_bound_traction_residual"),
+                          s.get_double("error_bound_equilibrium_residual")),
+                 1e-9)
+        << "\n  |u - u_h|^2 + |sigma - tau|^2 <= eta^2 (1 + 1e-9): "
+        << check(b.slack, 1e-9)
+        << ", no lift: " << check(s.get_double("error_bound_lift"), 0)
+        << "\n  bound sqrt(3) times the one-body scene's to 1e-6: "
+        << check(std::abs(s.get_double("error_bound") /
+                            (std::sqrt(3.) *
+                             one->results().summary.get_double("error_bound")) -
+                          1),
+                 1e-6)
+        << ", true error likewise: "
+        << check(std::abs(s.get_double("energy_error") /
+                            (std::sqrt(3.) * one->results().summary.get_double(
+                                               "energy_error")) -
+                          1),
+                 1e-6)
+        << std::endl;
+    }
+
+  // Mortar rows on matched meshes: the same rows, the same bound.
+  {
+    const auto node_to_segment = solve_from_text<2>(two_bodies(2));
+    const auto mortar          = solve_from_text<2>(
+      two_bodies(2, "subsection Contact\n  set Pair method = mortar\nend\n"));
+    const double a = bound_of(node_to_segment->results()).eta,
+                 m = bound_of(mortar->results()).eta;
+    std::cout << "mortar: the same bound to 1e-9: "
+              << check(std::abs(m / a - 1), 1e-9) << std::endl;
+  }
+
+  // The upper body (material id 0) pushed down by c (1 - y / 2) (1 + x):
+  // its base penetrates the lower body; v = u_h + w lifts the slave nodes
+  // back.
+  {
+    const auto                    problem = solve_from_text<2>(two_bodies(2));
+    auto                          pushed(problem->results());
+    const auto                   &dh = pushed.spaces.dof_handler_displacement;
+    std::vector<dealii::Point<2>> support(dh.n_dofs());
+    dealii::DoFTools::map_dofs_to_support_points(
+      dealii::StaticMappingQ1<2>::mapping, dh, support);
+    std::set<dealii::types::global_dof_index>    upper;
+    std::vector<dealii::types::global_dof_index> dofs(8);
+    for (const auto &cell : dh.active_cell_iterators())
+      if (cell->material_id() == 0)
+        {
+          cell->get_dof_indices(dofs);
+          upper.insert(dofs.begin(), dofs.end());
+        }
+    const double c = 0.05 * pushed.displacement.linfty_norm();
+    for (const auto i : upper)
+      if (i % 2 == 1)
+        pushed.displacement(i) -=
+          c * (1 - support[i][1] / 2) * (1 + support[i][0]);
+    const Bound original = bound_of(problem->results()), b = bound_of(pushed);
+    std::cout << "pushed into the lower body: penetration lifted "
+              << (b.penetration > 0 && b.penetration <= 2 * c ?
+                    "(0, 2 c]" :
+                    "NOT in (0, 2 c]")
+              << ", lift energy positive: " << (b.lift > 0 ? "yes" : "NO")
+              << ", the bound grows: " << (b.eta > original.eta ? "yes" : "NO")
+              << ", stays above the true error: "
+              << (b.eta >= b.error ? "yes" : "NO") << std::endl;
+  }
+
+  // The lower body cut into 3 x 2 cells: slave nodes between master nodes.
+  std::string       text = two_bodies(1);
+  const std::string body_2 =
+    "    set Grid arguments = 2, 2 : 0, 0 : 1, 1 : true";
+  text.replace(text.find(body_2),
+               body_2.size(),
+               "    set Grid arguments = 3, 2 : 0, 0 : 1, 1 : true");
+  print_input_refusal("non-matching meshes", text);
+}
