@@ -9,7 +9,10 @@
 // sends its hanging nodes' moments to its ghosts): the same cells, bound
 // and effectivity to 1e-9. Then both for the contact scene
 // parameters/signorini-error-bound.prm (each process gathers the contact
-// faces and shares the reactions alike).
+// faces and shares the reactions alike), and for its two-body form with a
+// contact pair, parameters/two-body-signorini-error-bound.prm (a master
+// node's row carries its own hanging shares only on a distributed mesh:
+// the slave's come with the slave's reaction).
 
 #include <deal.II/base/mpi.h>
 
@@ -125,4 +128,5 @@ main(int argc, char **argv)
   };
   compare("cantilever-error-bound.prm");
   compare("signorini-error-bound.prm");
+  compare("two-body-signorini-error-bound.prm");
 }

@@ -51,6 +51,16 @@ namespace hrcontact
           return unknowns(shares->terms()[t].column);
         });
       }
+    // With pair rows: the hanging dofs that depend on each parent dof, for
+    // the shares of a row's own node alone (its shares also hold alpha
+    // times the slave's, which the slave's reaction carries).
+    std::map<types::global_dof_index,
+             std::vector<std::pair<types::global_dof_index, double>>>
+      children;
+    if (shares && !pair_row_at.empty())
+      for (const auto &line : system.hanging_nodes.get_lines())
+        for (const auto &[parent, a] : line.entries)
+          children[parent].emplace_back(line.index, a);
     for (unsigned int k = 0; k < rows.size(); ++k)
       {
         const EquilibriumRow &row = system.rows[rows[k]];
@@ -85,7 +95,15 @@ namespace hrcontact
                   c * q.direction_component(system.dof_component(dof));
               }
           }
+        std::map<types::global_dof_index, double> own_shares;
+        for (const auto &[dof, c] : own.combination)
+          if (const auto found = children.find(dof); found != children.end())
+            for (const auto &[h, a] : found->second)
+              own_shares[h] += c * a;
+        own.shares.assign(own_shares.begin(), own_shares.end());
         values[k] = system.row_times(own, unknowns) - system.row_load(own);
+        if (shares)
+          values[k] += shares->of_row(own);
         for (const auto &[slave, a] : alpha)
           values[k] += a * pair_reactions[pair_row_at.at(slave)];
       }
