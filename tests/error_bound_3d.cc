@@ -11,8 +11,8 @@
 // - On 2 processes (a p4est mesh): the bound, true error and effectivity
 //   as serially to 1e-9.
 // - What the 3D bound does not cover yet (cells that are not
-//   parallelepipeds; bound-driven cycles, which make hanging nodes) is
-//   refused by name.
+//   parallelepipeds; contact; bound-driven cycles, which make hanging
+//   nodes) is refused by name.
 // - A prescribed displacement Q1 cannot meet between the nodes is reported
 //   (error_bound_support_mismatch) and warned about.
 
@@ -204,6 +204,22 @@ main(int argc, char **argv)
       "distorted cells",
       cube(1, "results") +
         "subsection Geometry\n  set Distortion = 0.2\nend\n");
+    std::cout.rdbuf(old);
+    if (rank == 0)
+      std::cout << out.str();
+  }
+  // Contact in 3D: a contact pair (parameters/stacked-boxes-3d.prm; the 2D
+  // check of the pair rows must not read 3D rows).
+  {
+    std::ostringstream out;
+    std::streambuf    *old = std::cout.rdbuf(out.rdbuf());
+    print_input_refusal<3>(
+      "contact pair in 3D",
+      read_file(std::string(SOURCE_DIR) +
+                "/../parameters/stacked-boxes-3d.prm") +
+        "subsection Postprocess\n  set Error bound = true\nend\n"
+        "subsection Output\n  set Write solution = false\n"
+        "  set Output directory = results\nend\n");
     std::cout.rdbuf(old);
     if (rank == 0)
       std::cout << out.str();

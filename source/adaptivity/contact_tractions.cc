@@ -64,6 +64,8 @@ namespace hrcontact
   std::string
   ContactTractions::not_covered(const EquilibriumSystem &sys)
   {
+    if (sys.dim != 2 && !sys.contact_rows.empty())
+      return "no contact in 3D yet";
     std::map<unsigned int, unsigned int> rows_at_node;
     for (const unsigned int r : sys.contact_rows)
       {
