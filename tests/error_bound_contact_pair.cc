@@ -13,6 +13,11 @@
 // - mortar rows (matched meshes: the same rows) give the same bound;
 // - the upper body's displacement pushed into the lower body: lifted back,
 //   the bound grows and stays above the pushed field's true error;
+// - Supports/Normal displacements along an axis hold like a prescribed
+//   component (the same bound as u_x = 0); a normal value Q1 cannot meet
+//   is reported as a support mismatch; a normal along no axis is refused;
+// - the patch tests stacked-blocks.prm and three-blocks.prm (uniform
+//   stress, reproduced by u_h): the bound is round-off;
 // - meshes that do not match across the pair are refused by name.
 
 #include <deal.II/dofs/dof_tools.h>
@@ -150,6 +155,86 @@ main()
               << ", stays above the true error: "
               << (b.eta >= b.error ? "yes" : "NO") << std::endl;
   }
+
+  // Normal displacements (u . n = 0) on the lower body's left side instead
+  // of u_x = 0 (on the upper body's, its corner would be a slave node with
+  // a normal constraint, which the pair refuses): the same problem, the
+  // same bound.
+  {
+    std::string       text = two_bodies(2);
+    const std::string held = "set Prescribed displacements = 0 x: 0 | 10 x: 0";
+    text.replace(text.find(held),
+                 held.size(),
+                 "set Prescribed displacements = 0 x: 0\n"
+                 "  set Normal displacements = 10: 0");
+    const auto         normal = solve_from_text<2>(text);
+    const auto         held_x = solve_from_text<2>(two_bodies(2));
+    std::ostringstream quiet;
+    normal->output_results(quiet);
+    const auto &s = normal->results().summary;
+    std::cout << "Normal displacements along x: the bound of u_x = 0 to 1e-9: "
+              << check(std::abs(bound_of(normal->results()).eta /
+                                  bound_of(held_x->results()).eta -
+                                1),
+                       1e-9)
+              << ", admissible to 1e-9: "
+              << check(std::max(s.get_double("error_bound_traction_residual"),
+                                s.get_double(
+                                  "error_bound_equilibrium_residual")),
+                       1e-9)
+              << ", no support mismatch: "
+              << check(s.get_double("error_bound_support_mismatch"), 0)
+              << std::endl;
+    // A normal value Q1 cannot meet between the nodes is reported.
+    std::string       curved = text;
+    const std::string zero   = "set Normal displacements = 10: 0";
+    curved.replace(curved.find(zero),
+                   zero.size(),
+                   "set Normal displacements = 10: 1e-4*y^2");
+    const auto bent = solve_from_text<2>(curved);
+    bent->output_results(quiet);
+    std::cout
+      << "  u . n = 1e-4 y^2 reported as a support mismatch (above 1e-5): "
+      << (bent->results().summary.get_double("error_bound_support_mismatch") >
+              1e-5 ?
+            "yes" :
+            "NO")
+      << std::endl;
+    // A normal that is not an axis: Cook's membrane's inclined sides.
+    print_input_refusal(
+      "a normal constraint along no axis",
+      read_file(std::string(SOURCE_DIR) + "/../parameters/cooks-membrane.prm") +
+        "subsection Supports\n  set Normal displacements = 2: 0\nend\n"
+        "subsection Finite elements\n  set Stress element = DGQ1\nend\n"
+        "subsection Postprocess\n  set Error bound = true\nend\n"
+        "subsection Output\n  set Write solution = false\n"
+        "  set Output directory = results\nend\n");
+  }
+
+  // Patch tests between bodies of different stiffness, meshes matched:
+  // the exact solution is uniform stress, which u_h reproduces, so the
+  // bound must be round-off (a master side that carried the wrong
+  // tractions would show here).
+  for (const std::string scene : {"stacked-blocks", "three-blocks"})
+    {
+      const auto problem = solve_from_text<2>(
+        read_file(std::string(SOURCE_DIR) + "/../parameters/" + scene +
+                  ".prm") +
+        "subsection Postprocess\n  set Error bound = true\nend\n"
+        "subsection Output\n  set Write solution = false\n"
+        "  set Output directory = results\nend\n");
+      std::ostringstream quiet;
+      problem->output_results(quiet);
+      const auto &s = problem->results().summary;
+      std::cout << scene << ": uniform stress, bound below 1e-10 (relative): "
+                << check(s.get_double("error_bound_relative"), 1e-10)
+                << ", admissible to 1e-12: "
+                << check(std::max(s.get_double("error_bound_traction_residual"),
+                                  s.get_double(
+                                    "error_bound_equilibrium_residual")),
+                         1e-12)
+                << std::endl;
+    }
 
   // The lower body cut into 3 x 2 cells: slave nodes between master nodes.
   std::string       text = two_bodies(1);

@@ -70,10 +70,13 @@ namespace hrcontact
     for (const unsigned int r : sys.contact_rows)
       {
         const EquilibriumRow &row = sys.rows[r];
-        if (!row.unilateral || row.law)
-          return "only unilateral contact so far: no bilateral rows or "
-                 "constraint laws";
-        if (row.obstacle < 0 &&
+        if (row.law)
+          return "only unilateral contact so far: no constraint laws";
+        if (!row.unilateral && held_dof(sys, row) < 0)
+          return "bilateral rows only as normal constraints whose normal "
+                 "is an axis so far (Supports/Normal displacements on "
+                 "straight faces along x or y; no bilateral pairs)";
+        if (row.obstacle < 0 && row.unilateral &&
             matched_master(sys, row) == numbers::invalid_unsigned_int)
           return "contact pairs only where each slave node coincides with a "
                  "master node so far (matched meshes; not a slave node "
@@ -97,7 +100,9 @@ namespace hrcontact
     for (unsigned int k = 0; k < nq; ++k)
       {
         const EquilibriumRow &row = sys.rows[sys.contact_rows[k]];
-        row_of_node[row.node]     = k;
+        if (!row.unilateral) // a held component: no contact face
+          continue;
+        row_of_node[row.node] = k;
         if (row.obstacle < 0)
           {
             master_node[k] = matched_master(sys, row);
@@ -264,22 +269,27 @@ namespace hrcontact
     const std::vector<double> &p       = results.reactions.contact;
     const unsigned int         nq      = p.size();
     double                     largest = 0;
-    for (const double v : p)
-      largest = std::max(largest, -v);
+    for (unsigned int k = 0; k < nq; ++k)
+      if (results.system.rows[results.system.contact_rows[k]].unilateral)
+        largest = std::max(largest, -p[k]);
     const double tol = 1e-12 * largest;
     // A released row's reaction is the contact iteration's round-off (a
     // spring's force, of either sign): not carried, it shows in the vertex
     // problems' residual (FaceTractions::residual) instead.
+    // A bilateral row's reaction is a held component's (the vertex
+    // problems take it), not a contact traction.
     std::vector<double> P(nq);
+    std::vector<bool>   done(nq, false);
     for (unsigned int k = 0; k < nq; ++k)
-      if (!results.contact || !results.contact->released[k])
+      if (!results.system.rows[results.system.contact_rows[k]].unilateral)
+        done[k] = true;
+      else if (!results.contact || !results.contact->released[k])
         {
           if (p[k] > 1e-8 * largest)
             refuse("a pressed contact row pulls" + where(k));
           P[k] = std::max(0., -p[k]);
         }
     // Each chain n_0 .. n_m of contact faces f_1 .. f_m from an end.
-    std::vector<bool> done(nq, false);
     for (unsigned int start = 0; start < nq; ++start)
       {
         if (done[start] || at[start].size() == 2)
@@ -474,6 +484,26 @@ namespace hrcontact
     const ArrayView<double>       sums(w.data(), w.size());
     Utilities::MPI::sum(values, results.partition.communicator, sums);
     return w;
+  }
+
+  long long
+  ContactTractions::held_dof(const EquilibriumSystem &sys,
+                             const EquilibriumRow    &row)
+  {
+    if (row.unilateral || row.law)
+      return -1;
+    long long dof = -1;
+    for (unsigned int i = 0; i < row.combination.size(); ++i)
+      {
+        if (sys.dof_node(row.combination[i].first) != row.node)
+          return -1;
+        const double d = row.direction_component(i);
+        if (std::abs(std::abs(d) - 1) < 1e-12)
+          dof = row.combination[i].first;
+        else if (std::abs(d) > 1e-12)
+          return -1;
+      }
+    return dof;
   }
 
   const ContactTractions::Face *

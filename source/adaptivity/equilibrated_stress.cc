@@ -33,8 +33,10 @@ namespace hrcontact
       if (!source->holds_pointwise_from_nodes())
         throw InputError(what + " does not cover " + source->entry() +
                          " yet (of the contact and normal kinds only "
-                         "Contact/Obstacles: straight obstacles, along whose "
-                         "faces the gap is linear).");
+                         "Contact/Obstacles, straight, along whose faces the "
+                         "gap is linear; Contact/Contact pairs on meshes that "
+                         "match across a straight interface; "
+                         "Supports/Normal displacements along an axis).");
     if (scene.stress_constraint)
       throw InputError(what + " does not cover Admissible stresses yet (a "
                               "reconstruction inside the cone).");

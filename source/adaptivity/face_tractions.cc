@@ -65,11 +65,18 @@ namespace hrcontact
   FaceTractions::classify_faces()
   {
     // A boundary face is held in component c when both its nodes are
-    // (Prescribed displacements); a point support holds no face.
+    // (Prescribed displacements, Normal displacements along an axis); a
+    // point support holds no face.
     std::set<types::global_dof_index> prescribed;
     for (const auto &row : results.system.rows)
       if (row.row_class == RowClass::prescribed)
         prescribed.insert(single_dof(row));
+    // Bilateral normal rows along an axis hold their component likewise.
+    for (const unsigned int r : results.system.contact_rows)
+      if (const long long dof =
+            ContactTractions::held_dof(results.system, results.system.rows[r]);
+          dof >= 0)
+        prescribed.insert(dof);
     const auto &tria = results.triangulation();
     faces.assign(tria.n_raw_lines(), Face());
     std::vector<bool> seen(tria.n_raw_lines(), false);

@@ -20,7 +20,8 @@ namespace hrcontact
     FEFaceValues<dim>           fv(StaticMappingQ1<dim>::mapping,
                          *results.spaces.fe_displacement,
                          rule,
-                         update_values | update_quadrature_points);
+                         update_values | update_quadrature_points |
+                           update_normal_vectors);
     std::vector<Vector<double>> u(rule.size(), Vector<double>(dim));
     double                      mismatch = 0;
     for (const auto &cell :
@@ -50,6 +51,19 @@ namespace hrcontact
                           mismatch =
                             std::max(mismatch, std::abs(u[q][d] - value));
                       }
+              // A bilateral normal constraint u . n = g.
+              for (const auto &source : results.scene.constraints)
+                if (source->acts_on(id))
+                  for (unsigned int q = 0; q < rule.size(); ++q)
+                    {
+                      const double g =
+                        source->normal_value(id, fv.quadrature_point(q));
+                      double u_n = 0;
+                      for (unsigned int d = 0; d < dim; ++d)
+                        u_n += u[q][d] * fv.normal_vector(q)[d];
+                      if (std::isfinite(g))
+                        mismatch = std::max(mismatch, std::abs(u_n - g));
+                    }
             }
     const MPI_Comm comm  = results.partition.communicator;
     mismatch             = Utilities::MPI::max(mismatch, comm);

@@ -92,6 +92,16 @@ namespace hrcontact
   }
 
   template <int dim>
+  double
+  BodyNormalConstraint<dim>::normal_value(const types::boundary_id id,
+                                          const Point<dim>        &x) const
+  {
+    if (unilateral || values.count(id) == 0)
+      return std::numeric_limits<double>::quiet_NaN();
+    return values.at(id)->value(x);
+  }
+
+  template <int dim>
   NormalDisplacements<dim>::NormalDisplacements()
     : BodyNormalConstraint<dim>("Supports",
                                 "Normal displacements",

@@ -78,6 +78,12 @@ namespace hrcontact
     static std::string
     not_covered(const EquilibriumSystem &system);
 
+    /** A bilateral normal row (Supports/Normal displacements) whose
+     * direction is an axis: the dof it holds, which the vertex problems
+     * treat as a prescribed component; else -1. */
+    static long long
+    held_dof(const EquilibriumSystem &system, const EquilibriumRow &row);
+
     /** The face on line @p line, or null. */
     const Face *
     find(const unsigned int line) const;

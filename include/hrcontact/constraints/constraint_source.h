@@ -190,6 +190,21 @@ namespace hrcontact
     }
 
     /**
+     * The value g of u . n = g this kind prescribes at @p x of its boundary
+     * @p id along the face's outward normal n, or NaN where it prescribes
+     * none (a bilateral normal constraint: SupportMismatch checks u_h
+     * against it between the nodes).
+     */
+    virtual double
+    normal_value(const dealii::types::boundary_id id,
+                 const dealii::Point<dim>        &x) const
+    {
+      (void)id;
+      (void)x;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
+    /**
      * Called once with every face of every kind's boundaries before any
      * collect(): a kind whose rows couple nodes of several faces (contact
      * pairs) finds its partners here. Does nothing by default.

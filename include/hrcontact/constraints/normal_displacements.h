@@ -38,6 +38,21 @@ namespace hrcontact
     collect(const BoundaryFace<dim> &face,
             const EquilibriumSystem &system,
             NodeConstraintMap<dim>  &nodes) const override;
+    /** Bilateral: g; unilateral: NaN (nothing prescribed). */
+    double
+    normal_value(const dealii::types::boundary_id id,
+                 const dealii::Point<dim>        &x) const override;
+    /**
+     * Bilateral: along a straight face whose normal is an axis, u . n is
+     * one Q1 component, met between the nodes where it is at them (the
+     * error bound's ContactTractions::not_covered checks the rows' normals,
+     * SupportMismatch a g that Q1 cannot meet).
+     */
+    bool
+    holds_pointwise_from_nodes() const override
+    {
+      return !unilateral;
+    }
 
   protected:
     /** The entry subsection/name, whether it is unilateral, and what an
