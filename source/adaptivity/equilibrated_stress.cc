@@ -51,24 +51,33 @@ namespace hrcontact
   }
 
   template <int dim>
+  void
+  EquilibratedStress<dim>::check_rows(const EquilibriumSystem &system)
+  {
+    const std::string what =
+      "The error bound (Postprocess/Error bound, Mesh refinement/Estimator = "
+      "bound, Target error)";
+    if (const std::string why = ContactTractions::not_covered(system);
+        !why.empty())
+      throw InputError(what + " covers " + why + ".");
+    for (const auto &row : system.rows)
+      if (row.row_class == RowClass::prescribed && single_dof(row) < 0)
+        throw InputError(what + " covers prescribed displacement components "
+                                "only (no normal or rotated constraints).");
+  }
+
+  template <int dim>
   EquilibratedStress<dim>::EquilibratedStress(const Results<dim> &results)
     : results(results)
   {
     check_scene(results.scene);
-    const std::string what =
-      "The error bound (Postprocess/Error bound, Mesh refinement/Estimator = "
-      "bound, Target error)";
-    if (const std::string why = ContactTractions::not_covered(results.system);
-        !why.empty())
-      throw InputError(what + " covers " + why + ".");
+    check_rows(results.system);
     if constexpr (dim == 3)
       if (const std::string why = HexahedronBound::not_covered(results);
           !why.empty())
-        throw InputError(what + " covers " + why + ".");
-    for (const auto &row : results.system.rows)
-      if (row.row_class == RowClass::prescribed && single_dof(row) < 0)
-        throw InputError(what + " covers prescribed displacement components "
-                                "only (no normal or rotated constraints).");
+        throw InputError("The error bound (Postprocess/Error bound, Mesh "
+                         "refinement/Estimator = bound, Target error) covers " +
+                         why + ".");
   }
 
   template <int dim>

@@ -133,10 +133,10 @@ namespace hrcontact
     log << "  rows: " << system.n_free_rows << " free (C), "
         << system.contact_rows.size() << " normal (Q), "
         << system.prescribed_rows.size() << " prescribed (H)" << std::endl;
-    // The postprocessors' input against the scene and the mesh (a probe
-    // outside the body, an error bound on contact), before the solve.
+    // The postprocessors' input against the scene, the mesh and the rows (a
+    // probe outside the body, an error bound on contact), before the solve.
     if (!coarser_level)
-      postprocessors.check_input(scene, mesh.triangulation());
+      postprocessors.check_input(scene, mesh.triangulation(), system);
   }
 
   template <int dim>

@@ -56,10 +56,14 @@ namespace hrcontact
   template <int dim>
   void
   ErrorBound<dim>::check_input(const Scene<dim> &scene,
-                               const Triangulation<dim> &) const
+                               const Triangulation<dim> &,
+                               const EquilibriumSystem &system) const
   {
     if (compute)
-      EquilibratedStress<dim>::check_scene(scene);
+      {
+        EquilibratedStress<dim>::check_scene(scene);
+        EquilibratedStress<dim>::check_rows(system);
+      }
   }
 
   template <int dim>

@@ -156,17 +156,19 @@ namespace hrcontact
   template <int dim>
   void
   Postprocessor<dim>::check_input(const Scene<dim> &,
-                                  const Triangulation<dim> &) const
+                                  const Triangulation<dim> &,
+                                  const EquilibriumSystem &) const
   {}
 
   template <int dim>
   void
   PostprocessorManager<dim>::check_input(
     const Scene<dim>         &scene,
-    const Triangulation<dim> &triangulation) const
+    const Triangulation<dim> &triangulation,
+    const EquilibriumSystem  &system) const
   {
     for (const auto &p : postprocessors)
-      p->check_input(scene, triangulation);
+      p->check_input(scene, triangulation, system);
   }
 
   template class Postprocessor<2>;

@@ -99,7 +99,8 @@ namespace hrcontact
   template <int dim>
   void
   Probes<dim>::check_input(const Scene<dim> &,
-                           const Triangulation<dim> &triangulation) const
+                           const Triangulation<dim> &triangulation,
+                           const EquilibriumSystem &) const
   {
     for (const Probe &probe : probes)
       if (!mesh_contains_point(triangulation, probe.point))

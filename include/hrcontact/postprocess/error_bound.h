@@ -28,10 +28,12 @@ namespace hrcontact
                      const Constants          &constants) override;
     std::string
     skip_reason(const Results<dim> &results) const override;
-    /** A scene the bound does not cover yet, refused before the solve. */
+    /** A scene or rows the bound does not cover yet, refused before the
+     * solve. */
     void
     check_input(const Scene<dim>                 &scene,
-                const dealii::Triangulation<dim> &triangulation) const override;
+                const dealii::Triangulation<dim> &triangulation,
+                const EquilibriumSystem          &system) const override;
     void
     execute(const Results<dim> &results, PostprocessOutput &output) override;
 

@@ -75,13 +75,15 @@ namespace hrcontact
     virtual bool
     needs_replicated_mesh(const Scene<dim> &scene) const;
     /**
-     * Check its input against the scene and the mesh before the solve (a
-     * probe outside the body, a scene the error bound does not cover),
-     * throwing InputError; collective. Nothing by default.
+     * Check its input against the scene, the mesh and the classified rows
+     * before the solve (a probe outside the body, a scene or a contact the
+     * error bound does not cover), throwing InputError; collective.
+     * Nothing by default.
      */
     virtual void
     check_input(const Scene<dim>                 &scene,
-                const dealii::Triangulation<dim> &triangulation) const;
+                const dealii::Triangulation<dim> &triangulation,
+                const EquilibriumSystem          &system) const;
   };
 
   /**
@@ -126,7 +128,8 @@ namespace hrcontact
     /** Each one's check_input. */
     void
     check_input(const Scene<dim>                 &scene,
-                const dealii::Triangulation<dim> &triangulation) const;
+                const dealii::Triangulation<dim> &triangulation,
+                const EquilibriumSystem          &system) const;
 
     /** The names registered, in `all` order. */
     static std::vector<std::string>

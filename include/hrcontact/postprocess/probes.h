@@ -31,7 +31,8 @@ namespace hrcontact
     /** Every probe point inside the body, before the solve. */
     void
     check_input(const Scene<dim>                 &scene,
-                const dealii::Triangulation<dim> &triangulation) const override;
+                const dealii::Triangulation<dim> &triangulation,
+                const EquilibriumSystem          &system) const override;
 
   private:
     struct Probe
