@@ -18,10 +18,12 @@
 //   is reported as a support mismatch; a normal along no axis is refused;
 // - the patch tests stacked-blocks.prm and three-blocks.prm (uniform
 //   stress, reproduced by u_h): the bound is round-off;
-// - meshes that do not match across the pair are refused by name.
+// - meshes that do not match across the pair are refused by name, before
+//   the solve (also with Estimator = bound and no Postprocess/Error bound).
 
 #include <deal.II/dofs/dof_tools.h>
 
+#include <hrcontact/adaptivity/adaptive_run.h>
 #include <hrcontact/adaptivity/equilibrated_stress.h>
 #include <hrcontact/core/input.h>
 
@@ -244,4 +246,33 @@ main()
                body_2.size(),
                "    set Grid arguments = 3, 2 : 0, 0 : 1, 1 : true");
   print_input_refusal("non-matching meshes", text);
+  // Estimator = bound on them (no Postprocess/Error bound; no cycles after
+  // the first, so that its solve would be logged): refused before it too.
+  {
+    dealii::ParameterHandler prm;
+    hrcontact::declare_all_parameters(prm);
+    std::string       cycles = text;
+    const std::string bound  = "set Error bound      = true";
+    cycles.replace(cycles.find(bound), bound.size(), "set Error bound = false");
+    prm.parse_input_from_string(cycles + "subsection Mesh refinement\n"
+                                         "  set Adaptive cycles = 0\n"
+                                         "  set Estimator = bound\nend\n");
+    std::ostringstream log;
+    try
+      {
+        hrcontact::run_adaptive_cycles<2>(prm, log, MPI_COMM_WORLD);
+        std::cout << "Estimator = bound on non-matching meshes: NOT refused"
+                  << std::endl;
+      }
+    catch (const hrcontact::InputError &e)
+      {
+        std::cout << "Estimator = bound on non-matching meshes: refused before "
+                     "a solve: "
+                  << (log.str().find("augmented Lagrangian") ==
+                          std::string::npos ?
+                        "yes" :
+                        "NO")
+                  << std::endl;
+      }
+  }
 }

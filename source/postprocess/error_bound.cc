@@ -29,8 +29,11 @@ namespace hrcontact
       "is admissible; with a Reference stress also the true energy error "
       "and the effectivity index; with contact the contact term's share. "
       "So far 2D (hanging nodes included), linear elastic and Ramberg-Osgood "
-      "bodies (the Fenchel-Young gap), contact "
-      "with straight obstacles (Contact/Obstacles).");
+      "bodies (the Fenchel-Young gap), contact with straight obstacles "
+      "(Contact/Obstacles) and between bodies whose meshes match across a "
+      "straight interface (Contact/Contact pairs), Supports/Normal "
+      "displacements along an axis; 3D on meshes of parallelepipeds, linear "
+      "elastic bodies.");
     prm.leave_subsection();
   }
 
@@ -43,6 +46,12 @@ namespace hrcontact
     compute = prm.get_bool("Error bound");
     if (compute)
       reference_stress = parse_reference_stress<dim>(prm, constants);
+    prm.leave_subsection();
+    // Bound-driven cycles compute the bound too (BoundIndicator, the target
+    // error): what it does not cover is refused before the first solve.
+    prm.enter_subsection("Mesh refinement");
+    check = compute || Utilities::trim(prm.get("Estimator")) == "bound" ||
+            prm.get_double("Target error") > 0;
     prm.leave_subsection();
   }
 
@@ -59,7 +68,7 @@ namespace hrcontact
                                const Triangulation<dim> &,
                                const EquilibriumSystem &system) const
   {
-    if (compute)
+    if (check)
       {
         EquilibratedStress<dim>::check_scene(scene);
         EquilibratedStress<dim>::check_rows(system);

@@ -38,7 +38,10 @@ namespace hrcontact
     execute(const Results<dim> &results, PostprocessOutput &output) override;
 
   private:
-    bool                                   compute = false;
+    bool compute = false;
+    /** Its input is checked before the solve: it computes the bound, or
+     * bound-driven adaptive cycles do. */
+    bool                                   check = false;
     std::unique_ptr<dealii::Function<dim>> reference_stress;
   };
 } // namespace hrcontact
