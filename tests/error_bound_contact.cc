@@ -22,6 +22,7 @@
 #include <hrcontact/adaptivity/equilibrated_stress.h>
 #include <hrcontact/core/input.h>
 
+#include "error_bound_check.h"
 #include "tests.h"
 
 using namespace hrcontact_tests;
@@ -37,32 +38,6 @@ namespace
   const std::string exact_stress =
     "if(x<x0, -b*lam*(x-x0)^2, -6*k*y*(lam+2*mu)*(x-x0)); if(x<x0, "
     "-b*(lam+2*mu)*(x-x0)^2, -6*k*lam*y*(x-x0)); if(x<x0, -2*b*mu*y*(x-x0), 0)";
-
-  // The bound of @p results, its inequality's slack and its true error.
-  struct Bound
-  {
-    double eta, error, slack, admissible, lift, penetration;
-  };
-  Bound
-  bound_of(const hrcontact::Results<2> &results)
-  {
-    hrcontact::EquilibratedStress<2> tau(results);
-    tau.compute();
-    const auto   reference = hrcontact::make_function<2>(exact_stress,
-                                                       3,
-                                                       results.scene.constants,
-                                                       "test");
-    const auto   c         = tau.compare(*reference);
-    const double eta       = tau.bound();
-    return {eta,
-            std::sqrt(c.displacement_error_squared),
-            (c.displacement_error_squared + c.reconstruction_error_squared) /
-                (eta * eta) -
-              1,
-            std::max(tau.traction_residual, tau.cell_residual),
-            tau.lift,
-            tau.largest_penetration};
-  }
 } // namespace
 
 int
@@ -74,10 +49,10 @@ main()
       const auto         problem = solve_from_text<2>(signorini(r));
       std::ostringstream quiet;
       problem->output_results(quiet);
-      const auto  &res = problem->results();
-      const auto  &s   = res.summary;
-      const Bound  b   = bound_of(res);
-      const double eff = s.get_double("effectivity_index");
+      const auto      &res = problem->results();
+      const auto      &s   = res.summary;
+      const BoundCheck b   = bound_against(res, exact_stress);
+      const double     eff = s.get_double("effectivity_index");
       // Pressed nodes: x <= 1/2 is n / 2 + 1 of the base's n + 1.
       const unsigned int n       = 2u << r;
       unsigned int       pressed = 0;
@@ -122,15 +97,10 @@ main()
     for (unsigned int i = 1; i < support.size(); i += 2)
       pushed.displacement(i) -=
         c * (1 - support[i][1] / 2) * (1 + support[i][0]);
-    const Bound original = bound_of(problem->results()), b = bound_of(pushed);
-    std::cout << "pushed into the obstacle: penetration lifted "
-              << (b.penetration > 0 && b.penetration <= 2 * c ?
-                    "(0, 2 c]" :
-                    "NOT in (0, 2 c]")
-              << ", lift energy positive: " << (b.lift > 0 ? "yes" : "NO")
-              << ", the bound grows: " << (b.eta > original.eta ? "yes" : "NO")
-              << ", stays above the true error: "
-              << (b.eta >= b.error ? "yes" : "NO") << std::endl;
+    report_pushed("the obstacle",
+                  bound_against(problem->results(), exact_stress),
+                  bound_against(pushed, exact_stress),
+                  c);
   }
 
   // Hertz: the cylinder on the plane, 192 cells.

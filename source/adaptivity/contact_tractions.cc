@@ -37,6 +37,32 @@ namespace hrcontact
         {row.direction_component(0), row.direction_component(1)});
     }
 
+    /** @p visit(face, row at its vertex 0, row at its vertex 1) for every
+     * boundary face of this process's own and ghost cells whose two nodes
+     * have rows in @p row_of_node. */
+    template <typename Visit>
+    void
+    for_each_face_with_rows(
+      const Results<2>                           &results,
+      const std::map<unsigned int, unsigned int> &row_of_node,
+      const Visit                                &visit)
+    {
+      for (const auto &cell :
+           results.spaces.dof_handler_displacement.active_cell_iterators())
+        if (!cell->is_artificial())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const auto face = cell->face(f);
+                const auto a =
+                  row_of_node.find(face->vertex_dof_index(0, 0) / 2);
+                const auto b =
+                  row_of_node.find(face->vertex_dof_index(1, 0) / 2);
+                if (a != row_of_node.end() && b != row_of_node.end())
+                  visit(face, a->second, b->second);
+              }
+    }
+
     /** A contact pair's row whose master side is one node at the slave's
      * (its direction there -n, every other master node's zero): that node;
      * else invalid (non-matching meshes, where the relative displacement
@@ -136,24 +162,17 @@ namespace hrcontact
              (r.obstacle >= 0 ||
               (row_direction(r) - row_direction(s)).norm() < 1e-12);
     };
-    for (const auto &cell :
-         results.spaces.dof_handler_displacement.active_cell_iterators())
-      if (!cell->is_artificial())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            {
-              const auto face = cell->face(f);
-              const auto a = row_of_node.find(face->vertex_dof_index(0, 0) / 2),
-                         b = row_of_node.find(face->vertex_dof_index(1, 0) / 2);
-              if (a == row_of_node.end() || b == row_of_node.end() ||
-                  !same_kind(a->second, b->second))
-                continue;
-              Face &c = faces[face->index()];
-              c.row   = {{a->second, b->second}};
-              c.direction =
-                row_direction(sys.rows[sys.contact_rows[a->second]]);
-              c.gap = {{gap(face, 0, a->second), gap(face, 1, b->second)}};
-            }
+    for_each_face_with_rows(
+      results,
+      row_of_node,
+      [&](const auto &face, const unsigned int a, const unsigned int b) {
+        if (!same_kind(a, b))
+          return;
+        Face &c     = faces[face->index()];
+        c.row       = {{a, b}};
+        c.direction = row_direction(sys.rows[sys.contact_rows[a]]);
+        c.gap       = {{gap(face, 0, a), gap(face, 1, b)}};
+      });
     if (pairs)
       find_master_faces(results, master_node);
     share_reactions(results);
@@ -442,29 +461,18 @@ namespace hrcontact
     for (unsigned int k = 0; k < master_node.size(); ++k)
       if (master_node[k] != numbers::invalid_unsigned_int)
         row_of_master[master_node[k]] = k;
-    for (const auto &cell :
-         results.spaces.dof_handler_displacement.active_cell_iterators())
-      if (!cell->is_artificial())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            {
-              const auto face = cell->face(f);
-              const auto a =
-                row_of_master.find(face->vertex_dof_index(0, 0) / 2);
-              const auto b =
-                row_of_master.find(face->vertex_dof_index(1, 0) / 2);
-              if (a == row_of_master.end() || b == row_of_master.end())
-                continue;
-              const Tensor<1, 2> n =
-                row_direction(sys.rows[sys.contact_rows[a->second]]);
-              if ((n - row_direction(sys.rows[sys.contact_rows[b->second]]))
-                    .norm() > 1e-12)
-                continue;
-              Face &c     = faces[face->index()];
-              c.row       = {{a->second, b->second}};
-              c.direction = -n;
-              c.master    = true;
-            }
+    for_each_face_with_rows(
+      results,
+      row_of_master,
+      [&](const auto &face, const unsigned int a, const unsigned int b) {
+        const Tensor<1, 2> n = row_direction(sys.rows[sys.contact_rows[a]]);
+        if ((n - row_direction(sys.rows[sys.contact_rows[b]])).norm() > 1e-12)
+          return;
+        Face &c     = faces[face->index()];
+        c.row       = {{a, b}};
+        c.direction = -n;
+        c.master    = true;
+      });
   }
 
   std::vector<double>
