@@ -18,6 +18,10 @@
 //   is reported as a support mismatch; a normal along no axis is refused;
 // - the patch tests stacked-blocks.prm and three-blocks.prm (uniform
 //   stress, reproduced by u_h): the bound is round-off;
+// - a tied (bilateral) pair, parameters/two-body-tied-error-bound.prm, with
+//   tension and compression across it: effectivity in [1, 2], admissible,
+//   the inequality, the true error sqrt(3) times the one-body problem's
+//   with its base held;
 // - meshes that do not match across the pair are refused by name, before
 //   the solve (also with Estimator = bound and no Postprocess/Error bound).
 
@@ -128,6 +132,86 @@ main()
                   bound_against(problem->results(), exact_stress),
                   bound_against(pushed, exact_stress),
                   c);
+  }
+
+  // A tied (bilateral) pair, parameters/two-body-tied-error-bound.prm:
+  // tension and compression across it, linear tractions of either sign.
+  // Each body solves the one-body problem with its base held in y (the
+  // interface stays on y = 0), so the true error must be sqrt(3) times
+  // that problem's; the bound is not the same (the held base's moments are
+  // the vertex problems' choice, the tied faces' a split by length).
+  {
+    const std::string tied_stress =
+      "-b*lam*(x-0.5)*abs(x-0.5); -b*(lam+2*mu)*(x-0.5)*abs(x-0.5); "
+      "-2*b*mu*y*abs(x-0.5)";
+    const std::string one_body = R"(set Dimension = 2
+set Constants = E = 1e3, nu = 0.3, lam = E*nu/((1+nu)*(1-2*nu)), mu = E/(2*(1+nu)), b = 1e-2
+subsection Geometry
+  set Grid generator     = subdivided_hyper_rectangle
+  set Grid arguments     = 2, 2 : 0, 0 : 1, 1 : true
+  set Global refinements = 2
+end
+subsection Material
+  set Young's modulus = E
+  set Poisson's ratio = nu
+  set Plane condition = plane strain
+end
+subsection Loads
+  set Body force = 2*b*(lam+mu)*abs(x-0.5); 2*b*mu*y*if(x<0.5, -1, 1)
+  set Tractions = 0: -b*lam/4; b*mu*y | 1: -b*lam/4; -b*mu*y | 3: -2*b*mu*abs(x-0.5); -b*(lam+2*mu)*(x-0.5)*abs(x-0.5)
+end
+subsection Supports
+  set Prescribed displacements = 0 x: 0 | 2 y: 0
+end
+subsection Postprocess
+  set Error bound      = true
+  set Reference stress = -b*lam*(x-0.5)*abs(x-0.5); -b*(lam+2*mu)*(x-0.5)*abs(x-0.5); -2*b*mu*y*abs(x-0.5)
+end
+subsection Output
+  set Write solution = false
+  set Output directory = results
+end
+)";
+    for (const unsigned int r : {1u, 2u, 3u})
+      {
+        const auto problem = solve_from_text<2>(
+          scene_at_refinement("two-body-tied-error-bound", 2, r));
+        std::ostringstream quiet;
+        problem->output_results(quiet);
+        const auto       &res  = problem->results();
+        const auto       &s    = res.summary;
+        const BoundCheck  b    = bound_against(res, tied_stress);
+        std::string       one  = one_body;
+        const std::string from = "set Global refinements = 2";
+        one.replace(one.find(from),
+                    from.size(),
+                    "set Global refinements = " + std::to_string(r));
+        const auto held = solve_from_text<2>(one);
+        held->output_results(quiet);
+        double most = 0, least = 0;
+        for (const double p : res.reactions.contact)
+          {
+            most  = std::max(most, p);
+            least = std::min(least, p);
+          }
+        const double eff = s.get_double("effectivity_index");
+        std::cout << "tied, " << (2u << r) << " x " << (2u << r)
+                  << " cells per body: effectivity in [1, 2]: "
+                  << (eff >= 1 && eff <= 2 ? "yes" : "NO") << " ("
+                  << std::setprecision(3) << eff
+                  << "), tau admissible to 1e-9: " << check(b.admissible, 1e-9)
+                  << "\n  |u - u_h|^2 + |sigma - tau|^2 <= eta^2 (1 + 1e-9): "
+                  << check(b.slack, 1e-9) << ", the pair carries tension and "
+                  << "compression: " << (most > 0 && least < 0 ? "yes" : "NO")
+                  << ", true error sqrt(3) times the held base's to 1e-6: "
+                  << check(std::abs(s.get_double("energy_error") /
+                                      (std::sqrt(3.) *
+                                       held->results().summary.get_double(
+                                         "energy_error")) -
+                                    1),
+                           1e-6)
+                  << std::endl;
+      }
   }
 
   // Normal displacements (u . n = 0) on the lower body's left side instead

@@ -12,7 +12,8 @@
 // faces and shares the reactions alike), and for its two-body form with a
 // contact pair, parameters/two-body-signorini-error-bound.prm (a master
 // node's row carries its own hanging shares only on a distributed mesh:
-// the slave's come with the slave's reaction).
+// the slave's come with the slave's reaction), and the tied pair of
+// parameters/two-body-tied-error-bound.prm.
 
 #include <deal.II/base/mpi.h>
 
@@ -129,4 +130,5 @@ main(int argc, char **argv)
   compare("cantilever-error-bound.prm");
   compare("signorini-error-bound.prm");
   compare("two-body-signorini-error-bound.prm");
+  compare("two-body-tied-error-bound.prm");
 }

@@ -63,6 +63,16 @@ namespace hrcontact
               }
     }
 
+    /** A row over two bodies (a contact pair's). */
+    bool
+    is_pair_row(const EquilibriumSystem &sys, const EquilibriumRow &row)
+    {
+      for (const auto &[dof, c] : row.combination)
+        if (sys.dof_node(dof) != row.node)
+          return true;
+      return false;
+    }
+
     /** A contact pair's row whose master side is one node at the slave's
      * (its direction there -n, every other master node's zero): that node;
      * else invalid (non-matching meshes, where the relative displacement
@@ -97,16 +107,19 @@ namespace hrcontact
       {
         const EquilibriumRow &row = sys.rows[r];
         if (row.law)
-          return "only unilateral contact so far: no constraint laws";
-        if (!row.unilateral && held_dof(sys, row) < 0)
+          return "no constraint laws (two-sided stops) so far";
+        if (is_pair_row(sys, row))
+          {
+            if (matched_master(sys, row) == numbers::invalid_unsigned_int)
+              return "contact pairs only where each slave node coincides "
+                     "with a master node so far (matched meshes; not a "
+                     "slave node between two master nodes)";
+          }
+        else if (!row.unilateral && held_dof(sys, row) < 0)
           return "bilateral rows only as normal constraints whose normal "
                  "is an axis so far (Supports/Normal displacements on "
-                 "straight faces along x or y; no bilateral pairs)";
-        if (row.obstacle < 0 && row.unilateral &&
-            matched_master(sys, row) == numbers::invalid_unsigned_int)
-          return "contact pairs only where each slave node coincides with a "
-                 "master node so far (matched meshes; not a slave node "
-                 "between two master nodes)";
+                 "straight faces along x or y) and as contact pairs on "
+                 "matched meshes";
         if (++rows_at_node[row.node] > 1)
           return "a node on two obstacles (a corner between them)";
       }
@@ -126,7 +139,7 @@ namespace hrcontact
     for (unsigned int k = 0; k < nq; ++k)
       {
         const EquilibriumRow &row = sys.rows[sys.contact_rows[k]];
-        if (!row.unilateral) // a held component: no contact face
+        if (held_dof(sys, row) >= 0) // a held component: no contact face
           continue;
         row_of_node[row.node] = k;
         if (row.obstacle < 0)
@@ -149,16 +162,20 @@ namespace hrcontact
           for (unsigned int c = 0; c < 2; ++c)
             w += row.direction_component(c) *
                  results.displacement(face->vertex_dof_index(v, c));
-        penetration[k]      = std::max(0., w - row.value);
-        largest_penetration = std::max(largest_penetration, penetration[k]);
-        return std::max(0., row.value - w);
+        // A bilateral (tied) row: v meets it as an equation, lifted either
+        // way; its contact term is zero.
+        penetration[k] =
+          row.unilateral ? std::max(0., w - row.value) : w - row.value;
+        largest_penetration =
+          std::max(largest_penetration, std::abs(penetration[k]));
+        return row.unilateral ? std::max(0., row.value - w) : 0.;
       };
     // Both rows of a face: the same obstacle, or pair rows of the same
     // normal (a straight interface).
     const auto same_kind = [&](const unsigned int a, const unsigned int b) {
       const EquilibriumRow &r = sys.rows[sys.contact_rows[a]],
                            &s = sys.rows[sys.contact_rows[b]];
-      return r.obstacle == s.obstacle &&
+      return r.obstacle == s.obstacle && r.unilateral == s.unilateral &&
              (r.obstacle >= 0 ||
               (row_direction(r) - row_direction(s)).norm() < 1e-12);
     };
@@ -295,13 +312,19 @@ namespace hrcontact
     // A released row's reaction is the contact iteration's round-off (a
     // spring's force, of either sign): not carried, it shows in the vertex
     // problems' residual (FaceTractions::residual) instead.
-    // A bilateral row's reaction is a held component's (the vertex
-    // problems take it), not a contact traction.
+    // A bilateral normal row's reaction is a held component's (the vertex
+    // problems take it); a tied pair's, of either sign, is split by length.
     std::vector<double> P(nq);
     std::vector<bool>   done(nq, false);
     for (unsigned int k = 0; k < nq; ++k)
-      if (!results.system.rows[results.system.contact_rows[k]].unilateral)
-        done[k] = true;
+      if (const EquilibriumRow &row =
+            results.system.rows[results.system.contact_rows[k]];
+          !row.unilateral)
+        {
+          done[k] = true;
+          if (held_dof(results.system, row) < 0)
+            share_tied(k, -p[k]);
+        }
       else if (!results.contact || !results.contact->released[k])
         {
           if (p[k] > 1e-8 * largest)
@@ -353,6 +376,9 @@ namespace hrcontact
     };
     for (auto &[line, c] : faces)
       {
+        const bool tied =
+          !results.system.rows[results.system.contact_rows[c.row[0]]]
+             .unilateral;
         const GlobalFace *it = slave_face(c.row);
         const GlobalFace *reverse =
           c.master && it == nullptr ?
@@ -363,7 +389,7 @@ namespace hrcontact
         const double a = it ? it->share[0] : reverse->share[1],
                      b = it ? it->share[1] : reverse->share[0],
                      L = it ? it->length : reverse->length;
-        if (2 * a >= b && 2 * b >= a)
+        if (tied || (2 * a >= b && 2 * b >= a))
           {
             const double q0 = -2 * (2 * a - b) / L, q1 = -2 * (2 * b - a) / L;
             c.bernstein = {{q0, 0.5 * (q0 + q1), q1}};
@@ -385,7 +411,7 @@ namespace hrcontact
     const EquilibriumSystem             &sys = results.system;
     std::map<unsigned int, unsigned int> row_of_node;
     for (unsigned int k = 0; k < sys.contact_rows.size(); ++k)
-      if (penetration[k] > 0)
+      if (penetration[k] != 0)
         row_of_node[sys.rows[sys.contact_rows[k]].node] = k;
     std::map<unsigned int, Tensor<1, 2>> w_at;
     for (const auto &cell :
@@ -449,6 +475,25 @@ namespace hrcontact
                 lift_energy_squared += e[i] * C(i, j) * e[j] * fv.JxW(q);
           }
       }
+  }
+
+  void
+  ContactTractions::share_tied(const unsigned int k, const double P)
+  {
+    // Either sign, so any split does: by the faces' lengths.
+    double length = 0;
+    for (const unsigned int i : at[k])
+      length += all[i].length;
+    if (at[k].empty())
+      {
+        if (P != 0)
+          refuse("the reaction of a tied node with no pair face beside it "
+                 "cannot be carried" +
+                 where(k));
+        return;
+      }
+    for (const unsigned int i : at[k])
+      all[i].share[all[i].row[0] == k ? 0 : 1] = P * all[i].length / length;
   }
 
   void

@@ -35,7 +35,9 @@ namespace hrcontact
    * slave face carries tau n = q n, the master face between the two master
    * nodes the opposite traction -q n (action and reaction, pointwise), and
    * the relative normal displacement is linear along the pair of faces. The
-   * contact term is the slave face's.
+   * contact term is the slave face's. A bilateral (tied) pair carries a
+   * linear traction of either sign, and v meets its rows as equations
+   * (lifted either way), so that it has no contact term.
    * Where a node penetrates (the contact iteration's tolerance), v lifts
    * it by its penetration along d with its hat function; the bound then
    * adds that lift's energy (lift_energy, triangle inequality).
@@ -137,6 +139,10 @@ namespace hrcontact
                 const double                     tol);
     void
     share_reactions(const Results<2> &results);
+    /** A tied (bilateral pair) row's reaction @p P, of either sign, between
+     * its faces by their lengths. */
+    void
+    share_tied(const unsigned int k, const double P);
     void
     lift(const Results<2> &results, const std::vector<double> &penetration);
     /** The master faces of contact pairs: the faces between the master
