@@ -5,8 +5,10 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
 
+#include <hrcontact/adaptivity/contact_row_kinds.h>
 #include <hrcontact/adaptivity/contact_tractions.h>
 #include <hrcontact/adaptivity/triangle_split.h>
+#include <hrcontact/postprocess/field_values.h>
 
 #include <algorithm>
 #include <cmath>
@@ -59,72 +61,11 @@ namespace hrcontact
                 const auto b =
                   row_of_node.find(face->vertex_dof_index(1, 0) / 2);
                 if (a != row_of_node.end() && b != row_of_node.end())
-                  visit(face, a->second, b->second);
+                  visit(cell, f, a->second, b->second);
               }
     }
 
-    /** A row over two bodies (a contact pair's). */
-    bool
-    is_pair_row(const EquilibriumSystem &sys, const EquilibriumRow &row)
-    {
-      for (const auto &[dof, c] : row.combination)
-        if (sys.dof_node(dof) != row.node)
-          return true;
-      return false;
-    }
-
-    /** A contact pair's row whose master side is one node at the slave's
-     * (its direction there -n, every other master node's zero): that node;
-     * else invalid (non-matching meshes, where the relative displacement
-     * has a kink inside a face). */
-    unsigned int
-    matched_master(const EquilibriumSystem &sys, const EquilibriumRow &row)
-    {
-      std::map<unsigned int, Tensor<1, 2>> at;
-      for (unsigned int i = 0; i < row.combination.size(); ++i)
-        if (const unsigned int node = sys.dof_node(row.combination[i].first);
-            node != row.node)
-          at[node][sys.dof_component(row.combination[i].first)] +=
-            row.direction_component(i);
-      const Tensor<1, 2> n      = row_direction(row);
-      unsigned int       master = numbers::invalid_unsigned_int;
-      for (const auto &[m, d] : at)
-        if ((d + n).norm() < 1e-10 && master == numbers::invalid_unsigned_int)
-          master = m;
-        else if (d.norm() > 1e-10)
-          return numbers::invalid_unsigned_int;
-      return master;
-    }
   } // namespace
-
-  std::string
-  ContactTractions::not_covered(const EquilibriumSystem &sys)
-  {
-    if (sys.dim != 2 && !sys.contact_rows.empty())
-      return "no contact in 3D yet";
-    std::map<unsigned int, unsigned int> rows_at_node;
-    for (const unsigned int r : sys.contact_rows)
-      {
-        const EquilibriumRow &row = sys.rows[r];
-        if (row.law)
-          return "no constraint laws (two-sided stops) so far";
-        if (is_pair_row(sys, row))
-          {
-            if (matched_master(sys, row) == numbers::invalid_unsigned_int)
-              return "contact pairs only where each slave node coincides "
-                     "with a master node so far (matched meshes; not a "
-                     "slave node between two master nodes)";
-          }
-        else if (!row.unilateral && held_dof(sys, row) < 0)
-          return "bilateral rows only as normal constraints whose normal "
-                 "is an axis so far (Supports/Normal displacements on "
-                 "straight faces along x or y) and as contact pairs on "
-                 "matched meshes";
-        if (++rows_at_node[row.node] > 1)
-          return "a node on two obstacles (a corner between them)";
-      }
-    return "";
-  }
 
   ContactTractions::ContactTractions(const Results<2> &results)
   {
@@ -139,12 +80,13 @@ namespace hrcontact
     for (unsigned int k = 0; k < nq; ++k)
       {
         const EquilibriumRow &row = sys.rows[sys.contact_rows[k]];
-        if (held_dof(sys, row) >= 0) // a held component: no contact face
+        if (ContactRowKinds::held_dof(sys, row) >=
+            0) // a held component: no contact face
           continue;
         row_of_node[row.node] = k;
         if (row.obstacle < 0)
           {
-            master_node[k] = matched_master(sys, row);
+            master_node[k] = ContactRowKinds::matched_master(sys, row);
             pairs          = true;
           }
       }
@@ -179,17 +121,22 @@ namespace hrcontact
              (r.obstacle >= 0 ||
               (row_direction(r) - row_direction(s)).norm() < 1e-12);
     };
-    for_each_face_with_rows(
-      results,
-      row_of_node,
-      [&](const auto &face, const unsigned int a, const unsigned int b) {
-        if (!same_kind(a, b))
-          return;
-        Face &c     = faces[face->index()];
-        c.row       = {{a, b}};
-        c.direction = row_direction(sys.rows[sys.contact_rows[a]]);
-        c.gap       = {{gap(face, 0, a), gap(face, 1, b)}};
-      });
+    for_each_face_with_rows(results,
+                            row_of_node,
+                            [&](const auto        &cell,
+                                const unsigned int f,
+                                const unsigned int a,
+                                const unsigned int b) {
+                              if (!same_kind(a, b))
+                                return;
+                              const auto face = cell->face(f);
+                              Face      &c    = faces[face->index()];
+                              c.row           = {{a, b}};
+                              c.direction =
+                                row_direction(sys.rows[sys.contact_rows[a]]);
+                              c.gap     = {{gap(face, 0, a), gap(face, 1, b)}};
+                              c.natural = natural_moments(results, cell, f, c);
+                            });
     if (pairs)
       find_master_faces(results, master_node);
     share_reactions(results);
@@ -216,16 +163,20 @@ namespace hrcontact
                         cell->face(f)->vertex(0)[0],
                         cell->face(f)->vertex(0)[1],
                         cell->face(f)->vertex(1)[0],
-                        cell->face(f)->vertex(1)[1]});
+                        cell->face(f)->vertex(1)[1],
+                        c->natural[0],
+                        c->natural[1]});
     all.clear();
     for (const auto &part :
          Utilities::MPI::all_gather(results.partition.communicator, own))
-      for (unsigned int i = 0; i + 6 < part.size(); i += 7)
+      for (unsigned int i = 0; i + 8 < part.size(); i += 9)
         all.push_back({std::array<unsigned int, 2>{
                          {(unsigned int)part[i], (unsigned int)part[i + 1]}},
                        part[i + 2],
                        {{Point<2>(part[i + 3], part[i + 4]),
-                         Point<2>(part[i + 5], part[i + 6])}}});
+                         Point<2>(part[i + 5], part[i + 6])}},
+                       {{0., 0.}},
+                       {{part[i + 7], part[i + 8]}}});
     std::sort(all.begin(), all.end(), [](const auto &x, const auto &y) {
       return x.row < y.row;
     });
@@ -279,7 +230,7 @@ namespace hrcontact
         hi[j + 1] = std::max(0., P[node[j]] - b_lo);
       }
     // Backward: b_m is the last node's reaction; each a_j within the ratio
-    // of b_j and its interval, nearest the share by length.
+    // of b_j and its interval, nearest sigma_h's own split (below).
     double b = P[node[m]];
     for (unsigned int j = m; j >= 1; --j)
       {
@@ -287,10 +238,16 @@ namespace hrcontact
                      a_hi = std::min(hi[j], ratio * b);
         if (a_lo > a_hi + tol)
           too_fast(node[j]);
-        const double L_j = all[face[j - 1]].length,
-                     L_i = j >= 2 ? all[face[j - 2]].length : 0;
-        const double a =
-          std::clamp(P[node[j - 1]] * L_j / (L_i + L_j), a_lo, a_hi);
+        // Nearest the split of sigma_h's own moments (their natural
+        // shares), the difference halved between the two faces.
+        const auto natural = [&](const unsigned int i, const unsigned int k) {
+          return all[i].natural[all[i].row[0] == k ? 0 : 1];
+        };
+        const double n_j = natural(face[j - 1], node[j - 1]),
+                     n_i = j >= 2 ? natural(face[j - 2], node[j - 1]) : 0;
+        const double target =
+          j >= 2 ? n_j + 0.5 * (P[node[j - 1]] - n_j - n_i) : P[node[j - 1]];
+        const double a         = std::clamp(target, a_lo, a_hi);
         all[face[j - 1]].share = all[face[j - 1]].row[0] == node[j - 1] ?
                                    std::array<double, 2>{{a, b}} :
                                    std::array<double, 2>{{b, a}};
@@ -313,7 +270,7 @@ namespace hrcontact
     // spring's force, of either sign): not carried, it shows in the vertex
     // problems' residual (FaceTractions::residual) instead.
     // A bilateral normal row's reaction is a held component's (the vertex
-    // problems take it); a tied pair's, of either sign, is split by length.
+    // problems take it); a tied pair's, of either sign, is split freely.
     std::vector<double> P(nq);
     std::vector<bool>   done(nq, false);
     for (unsigned int k = 0; k < nq; ++k)
@@ -322,7 +279,7 @@ namespace hrcontact
           !row.unilateral)
         {
           done[k] = true;
-          if (held_dof(results.system, row) < 0)
+          if (ContactRowKinds::held_dof(results.system, row) < 0)
             share_tied(k, -p[k]);
         }
       else if (!results.contact || !results.contact->released[k])
@@ -477,13 +434,48 @@ namespace hrcontact
       }
   }
 
+  std::array<double, 2>
+  ContactTractions::natural_moments(
+    const Results<2>                          &results,
+    const DoFHandler<2>::active_cell_iterator &cell,
+    const unsigned int                         f,
+    const Face                                &face)
+  {
+    // The magnitude -(sigma_h n) . d of this side's traction, against the
+    // face's hats (vertex 0, 1 of the line).
+    const QGauss<1>                           rule(3);
+    FEFaceValues<2>                           fv(StaticMappingQ1<2>::mapping,
+                       *results.spaces.fe_stress,
+                       rule,
+                       update_values | update_normal_vectors |
+                         update_JxW_values | update_quadrature_points);
+    const DoFHandler<2>::active_cell_iterator stress_cell(
+      &results.triangulation(),
+      cell->level(),
+      cell->index(),
+      &results.spaces.dof_handler_stress);
+    fv.reinit(stress_cell, f);
+    std::vector<Vector<double>> values(
+      rule.size(), Vector<double>(MixedSpaces<2>::n_stress_components));
+    fv.get_function_values(results.stress, values);
+    const Point<2> a = cell->face(f)->vertex(0), b = cell->face(f)->vertex(1);
+    std::array<double, 2> m{{0., 0.}};
+    for (unsigned int q = 0; q < rule.size(); ++q)
+      {
+        const double lambda =
+          (fv.quadrature_point(q) - a) * (b - a) / (b - a).norm_square();
+        const double t =
+          -(stress_tensor<2>(values[q]) * fv.normal_vector(q)) * face.direction;
+        m[0] += t * (1 - lambda) * fv.JxW(q);
+        m[1] += t * lambda * fv.JxW(q);
+      }
+    return m;
+  }
+
   void
   ContactTractions::share_tied(const unsigned int k, const double P)
   {
-    // Either sign, so any split does: by the faces' lengths.
-    double length = 0;
-    for (const unsigned int i : at[k])
-      length += all[i].length;
+    // Either sign, so any split balances.
     if (at[k].empty())
       {
         if (P != 0)
@@ -492,8 +484,14 @@ namespace hrcontact
                  where(k));
         return;
       }
+    // Nearest sigma_h's own moments, the difference shared equally.
+    double natural = 0;
     for (const unsigned int i : at[k])
-      all[i].share[all[i].row[0] == k ? 0 : 1] = P * all[i].length / length;
+      natural += all[i].natural[all[i].row[0] == k ? 0 : 1];
+    for (const unsigned int i : at[k])
+      all[i].share[all[i].row[0] == k ? 0 : 1] =
+        all[i].natural[all[i].row[0] == k ? 0 : 1] +
+        (P - natural) / at[k].size();
   }
 
   void
@@ -509,8 +507,12 @@ namespace hrcontact
     for_each_face_with_rows(
       results,
       row_of_master,
-      [&](const auto &face, const unsigned int a, const unsigned int b) {
-        const Tensor<1, 2> n = row_direction(sys.rows[sys.contact_rows[a]]);
+      [&](const auto        &cell,
+          const unsigned int f,
+          const unsigned int a,
+          const unsigned int b) {
+        const auto         face = cell->face(f);
+        const Tensor<1, 2> n    = row_direction(sys.rows[sys.contact_rows[a]]);
         if ((n - row_direction(sys.rows[sys.contact_rows[b]])).norm() > 1e-12)
           return;
         Face &c     = faces[face->index()];
@@ -537,26 +539,6 @@ namespace hrcontact
     const ArrayView<double>       sums(w.data(), w.size());
     Utilities::MPI::sum(values, results.partition.communicator, sums);
     return w;
-  }
-
-  long long
-  ContactTractions::held_dof(const EquilibriumSystem &sys,
-                             const EquilibriumRow    &row)
-  {
-    if (row.unilateral || row.law)
-      return -1;
-    long long dof = -1;
-    for (unsigned int i = 0; i < row.combination.size(); ++i)
-      {
-        if (sys.dof_node(row.combination[i].first) != row.node)
-          return -1;
-        const double d = row.direction_component(i);
-        if (std::abs(std::abs(d) - 1) < 1e-12)
-          dof = row.combination[i].first;
-        else if (std::abs(d) > 1e-12)
-          return -1;
-      }
-    return dof;
   }
 
   const ContactTractions::Face *

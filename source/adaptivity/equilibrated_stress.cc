@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <hrcontact/adaptivity/cell_equilibration.h>
+#include <hrcontact/adaptivity/contact_row_kinds.h>
 #include <hrcontact/adaptivity/equilibrated_stress.h>
 #include <hrcontact/adaptivity/face_tractions.h>
 #include <hrcontact/adaptivity/hexahedron_bound.h>
@@ -57,7 +58,7 @@ namespace hrcontact
     const std::string what =
       "The error bound (Postprocess/Error bound, Mesh refinement/Estimator = "
       "bound, Target error)";
-    if (const std::string why = ContactTractions::not_covered(system);
+    if (const std::string why = ContactRowKinds::not_covered(system);
         !why.empty())
       throw InputError(what + " covers " + why + ".");
     for (const auto &row : system.rows)

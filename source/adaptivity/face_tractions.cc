@@ -6,6 +6,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
 
+#include <hrcontact/adaptivity/contact_row_kinds.h>
 #include <hrcontact/adaptivity/face_tractions.h>
 #include <hrcontact/adaptivity/refined_face_exchange.h>
 #include <hrcontact/postprocess/field_values.h>
@@ -74,7 +75,7 @@ namespace hrcontact
     // Bilateral normal rows along an axis hold their component likewise.
     for (const unsigned int r : results.system.contact_rows)
       if (const long long dof =
-            ContactTractions::held_dof(results.system, results.system.rows[r]);
+            ContactRowKinds::held_dof(results.system, results.system.rows[r]);
           dof >= 0)
         prescribed.insert(dof);
     const auto &tria = results.triangulation();

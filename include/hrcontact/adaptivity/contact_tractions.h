@@ -49,8 +49,9 @@ namespace hrcontact
    * reaction is shared between its two faces is a small interval problem
    * along each chain of contact faces (every process solves the whole
    * boundary's, gathered, so that all agree), the shares as close as it
-   * allows to the faces' lengths. A node whose reaction no such share can
-   * carry (a contact zone of one node) is refused by name.
+   * allows to sigma_h's own compressive moments on the two faces (the
+   * vertex problems' choice for the other faces). A node whose reaction no such
+   * share can carry (a contact zone of one node) is refused by name.
    */
   class ContactTractions
   {
@@ -70,21 +71,13 @@ namespace hrcontact
       /** The master side of a contact pair: tau n = -q n, with n (the
        * direction) already turned. */
       bool master = false;
+      /** The moments of sigma_h's own compressive traction -(sigma_h n) . d
+       * at the two vertices: the shares the reactions are split nearest. */
+      std::array<double, 2> natural{};
     };
 
     /** Every contact face of this process's own and ghost cells. */
     explicit ContactTractions(const Results<2> &results);
-
-    /** Why the contact rows of @p system are not covered,
-     * or empty when they are. */
-    static std::string
-    not_covered(const EquilibriumSystem &system);
-
-    /** A bilateral normal row (Supports/Normal displacements) whose
-     * direction is an axis: the dof it holds, which the vertex problems
-     * treat as a prescribed component; else -1. */
-    static long long
-    held_dof(const EquilibriumSystem &system, const EquilibriumRow &row);
 
     /** The face on line @p line, or null. */
     const Face *
@@ -121,6 +114,8 @@ namespace hrcontact
       std::array<dealii::Point<2>, 2> point;
       /** The magnitudes of its moments at its two rows. */
       std::array<double, 2> share{};
+      /** Face::natural. */
+      std::array<double, 2> natural{};
     };
     /** All contact faces, by rows; the faces at each row. */
     std::vector<GlobalFace>                all;
@@ -139,8 +134,14 @@ namespace hrcontact
                 const double                     tol);
     void
     share_reactions(const Results<2> &results);
+    /** Face::natural of @p face, the @p f-th face of @p cell. */
+    static std::array<double, 2>
+    natural_moments(const Results<2>                                  &results,
+                    const dealii::DoFHandler<2>::active_cell_iterator &cell,
+                    const unsigned int                                 f,
+                    const Face                                        &face);
     /** A tied (bilateral pair) row's reaction @p P, of either sign, between
-     * its faces by their lengths. */
+     * its faces nearest their natural moments. */
     void
     share_tied(const unsigned int k, const double P);
     void

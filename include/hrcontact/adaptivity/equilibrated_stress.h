@@ -59,7 +59,7 @@ namespace hrcontact
     check_scene(const Scene<dim> &scene);
 
     /** What the classified rows show before the solve: contact rows the
-     * construction does not carry (ContactTractions::not_covered),
+     * construction does not carry (ContactRowKinds::not_covered),
      * prescribed rows along no axis (InputError naming it). */
     static void
     check_rows(const EquilibriumSystem &system);
