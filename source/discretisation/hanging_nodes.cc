@@ -38,30 +38,34 @@ namespace hrcontact
       system.hanging_nodes.clear();
   }
 
+  HangingChildren::HangingChildren(const EquilibriumSystem &system)
+  {
+    for (const auto &line : system.hanging_nodes.get_lines())
+      for (const auto &[parent, a] : line.entries)
+        children[parent].emplace_back(line.index, a);
+  }
+
+  std::vector<std::pair<types::global_dof_index, double>>
+  HangingChildren::shares_of(
+    const std::vector<std::pair<types::global_dof_index, double>> &combination)
+    const
+  {
+    std::map<types::global_dof_index, double> shares;
+    for (const auto &[dof, c] : combination)
+      if (const auto found = children.find(dof); found != children.end())
+        for (const auto &[h, a] : found->second)
+          shares[h] += c * a;
+    return {shares.begin(), shares.end()};
+  }
+
   void
   add_hanging_shares(EquilibriumSystem &system)
   {
     if (system.n_hanging_dofs == 0)
       return;
-    // The hanging dofs that depend on each parent dof, with a_hj.
-    std::map<types::global_dof_index,
-             std::vector<std::pair<types::global_dof_index, double>>>
-      children;
-    for (const auto &line : system.hanging_nodes.get_lines())
-      for (const auto &[parent, a] : line.entries)
-        children[parent].emplace_back(line.index, a);
+    const HangingChildren children(system);
     for (EquilibriumRow &row : system.rows)
-      {
-        std::map<types::global_dof_index, double> shares;
-        for (const auto &[dof, c] : row.combination)
-          {
-            const auto found = children.find(dof);
-            if (found != children.end())
-              for (const auto &[h, a] : found->second)
-                shares[h] += c * a;
-          }
-        row.shares.assign(shares.begin(), shares.end());
-      }
+      row.shares = children.shares_of(row.combination);
   }
 
   HangingShareForces::HangingShareForces(const EquilibriumSystem &system,

@@ -51,16 +51,12 @@ namespace hrcontact
           return unknowns(shares->terms()[t].column);
         });
       }
-    // With pair rows: the hanging dofs that depend on each parent dof, for
-    // the shares of a row's own node alone (its shares also hold alpha
-    // times the slave's, which the slave's reaction carries).
-    std::map<types::global_dof_index,
-             std::vector<std::pair<types::global_dof_index, double>>>
-      children;
+    // With pair rows: the shares of a row's own node alone (its shares
+    // also hold alpha times the slave's, which the slave's reaction
+    // carries).
+    std::unique_ptr<HangingChildren> children;
     if (shares && !pair_row_at.empty())
-      for (const auto &line : system.hanging_nodes.get_lines())
-        for (const auto &[parent, a] : line.entries)
-          children[parent].emplace_back(line.index, a);
+      children = std::make_unique<HangingChildren>(system);
     for (unsigned int k = 0; k < rows.size(); ++k)
       {
         const EquilibriumRow &row = system.rows[rows[k]];
@@ -95,12 +91,9 @@ namespace hrcontact
                   c * q.direction_component(system.dof_component(dof));
               }
           }
-        std::map<types::global_dof_index, double> own_shares;
-        for (const auto &[dof, c] : own.combination)
-          if (const auto found = children.find(dof); found != children.end())
-            for (const auto &[h, a] : found->second)
-              own_shares[h] += c * a;
-        own.shares.assign(own_shares.begin(), own_shares.end());
+        own.shares.clear();
+        if (children)
+          own.shares = children->shares_of(own.combination);
         values[k] = system.row_times(own, unknowns) - system.row_load(own);
         if (shares)
           values[k] += shares->of_row(own);

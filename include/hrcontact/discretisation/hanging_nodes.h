@@ -10,6 +10,7 @@
 #include <hrcontact/discretisation/field_vector.h>
 
 #include <functional>
+#include <map>
 #include <vector>
 
 namespace hrcontact
@@ -43,6 +44,27 @@ namespace hrcontact
     return (lines.size() == 0 || lines.is_element(dof)) &&
            system.hanging_nodes.is_constrained(dof);
   }
+
+  /**
+   * The hanging dofs that depend on each parent dof (with a_hj), from the
+   * system's hanging-node constraints: the shares of any combination.
+   */
+  class HangingChildren
+  {
+  public:
+    explicit HangingChildren(const EquilibriumSystem &system);
+
+    /** sum_j c_j a_hj per hanging dof h, for the combination c. */
+    std::vector<std::pair<dealii::types::global_dof_index, double>>
+    shares_of(
+      const std::vector<std::pair<dealii::types::global_dof_index, double>>
+        &combination) const;
+
+  private:
+    std::map<dealii::types::global_dof_index,
+             std::vector<std::pair<dealii::types::global_dof_index, double>>>
+      children;
+  };
 
   /**
    * Each explicit row's EquilibriumRow::shares from the hanging nodes whose
