@@ -121,6 +121,13 @@ namespace hrcontact
              (r.obstacle >= 0 ||
               (row_direction(r) - row_direction(s)).norm() < 1e-12);
     };
+    // sigma_h on the contact faces (their natural shares), one FEFaceValues
+    // for all.
+    FEFaceValues<2> fv(StaticMappingQ1<2>::mapping,
+                       *results.spaces.fe_stress,
+                       QGauss<1>(3),
+                       update_values | update_normal_vectors |
+                         update_JxW_values | update_quadrature_points);
     for_each_face_with_rows(results,
                             row_of_node,
                             [&](const auto        &cell,
@@ -134,8 +141,9 @@ namespace hrcontact
                               c.row           = {{a, b}};
                               c.direction =
                                 row_direction(sys.rows[sys.contact_rows[a]]);
-                              c.gap     = {{gap(face, 0, a), gap(face, 1, b)}};
-                              c.natural = natural_moments(results, cell, f, c);
+                              c.gap = {{gap(face, 0, a), gap(face, 1, b)}};
+                              c.natural =
+                                natural_moments(results, cell, f, c, fv);
                             });
     if (pairs)
       find_master_faces(results, master_node);
@@ -439,16 +447,12 @@ namespace hrcontact
     const Results<2>                          &results,
     const DoFHandler<2>::active_cell_iterator &cell,
     const unsigned int                         f,
-    const Face                                &face)
+    const Face                                &face,
+    FEFaceValues<2>                           &fv)
   {
     // The magnitude -(sigma_h n) . d of this side's traction, against the
     // face's hats (vertex 0, 1 of the line).
-    const QGauss<1>                           rule(3);
-    FEFaceValues<2>                           fv(StaticMappingQ1<2>::mapping,
-                       *results.spaces.fe_stress,
-                       rule,
-                       update_values | update_normal_vectors |
-                         update_JxW_values | update_quadrature_points);
+    const unsigned int                        n_points = fv.n_quadrature_points;
     const DoFHandler<2>::active_cell_iterator stress_cell(
       &results.triangulation(),
       cell->level(),
@@ -456,11 +460,11 @@ namespace hrcontact
       &results.spaces.dof_handler_stress);
     fv.reinit(stress_cell, f);
     std::vector<Vector<double>> values(
-      rule.size(), Vector<double>(MixedSpaces<2>::n_stress_components));
+      n_points, Vector<double>(MixedSpaces<2>::n_stress_components));
     fv.get_function_values(results.stress, values);
     const Point<2> a = cell->face(f)->vertex(0), b = cell->face(f)->vertex(1);
     std::array<double, 2> m{{0., 0.}};
-    for (unsigned int q = 0; q < rule.size(); ++q)
+    for (unsigned int q = 0; q < n_points; ++q)
       {
         const double lambda =
           (fv.quadrature_point(q) - a) * (b - a) / (b - a).norm_square();

@@ -4,6 +4,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <deal.II/fe/fe_values.h>
+
 #include <hrcontact/core/results.h>
 
 #include <array>
@@ -139,7 +141,8 @@ namespace hrcontact
     natural_moments(const Results<2>                                  &results,
                     const dealii::DoFHandler<2>::active_cell_iterator &cell,
                     const unsigned int                                 f,
-                    const Face                                        &face);
+                    const Face                                        &face,
+                    dealii::FEFaceValues<2>                           &fv);
     /** A tied (bilateral pair) row's reaction @p P, of either sign, between
      * its faces nearest their natural moments. */
     void
