@@ -4,6 +4,10 @@
 #ifndef hrcontact_tests_error_bound_check_h
 #define hrcontact_tests_error_bound_check_h
 
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/mapping_q1.h>
+
 #include <hrcontact/adaptivity/equilibrated_stress.h>
 #include <hrcontact/core/input.h>
 
@@ -11,6 +15,7 @@
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace hrcontact_tests
 {
@@ -21,6 +26,18 @@ namespace hrcontact_tests
   {
     double eta, error, slack, admissible, lift, penetration;
   };
+
+  /** The support point of every displacement dof of @p results, for
+   * perturbing the displacement as a function of position. */
+  inline std::vector<dealii::Point<2>>
+  displacement_support_points(const hrcontact::Results<2> &results)
+  {
+    const auto                   &dh = results.spaces.dof_handler_displacement;
+    std::vector<dealii::Point<2>> support(dh.n_dofs());
+    dealii::DoFTools::map_dofs_to_support_points(
+      dealii::StaticMappingQ1<2>::mapping, dh, support);
+    return support;
+  }
 
   /** Reconstructs tau from @p results and compares with @p exact_stress
    * (xx; yy; xy in the scene's constants). */

@@ -15,9 +15,7 @@
 //   no lift, the contact term's share below 1e-6;
 // - a curved obstacle is refused by name.
 
-#include <deal.II/dofs/dof_tools.h>
 
-#include <deal.II/fe/mapping_q1.h>
 
 #include <hrcontact/adaptivity/equilibrated_stress.h>
 #include <hrcontact/core/input.h>
@@ -87,13 +85,10 @@ main()
   // u_h pushed into the obstacle by c (1 - y / 2) (1 + x): v = u_h + w
   // lifts the base's nodes back; the bound covers the pushed field.
   {
-    const auto                    problem = solve_from_text<2>(signorini(2));
-    auto                          pushed(problem->results());
-    const auto                   &dh = pushed.spaces.dof_handler_displacement;
-    std::vector<dealii::Point<2>> support(dh.n_dofs());
-    dealii::DoFTools::map_dofs_to_support_points(
-      dealii::StaticMappingQ1<2>::mapping, dh, support);
-    const double c = 0.05 * pushed.displacement.linfty_norm();
+    const auto   problem = solve_from_text<2>(signorini(2));
+    auto         pushed(problem->results());
+    const auto   support = displacement_support_points(pushed);
+    const double c       = 0.05 * pushed.displacement.linfty_norm();
     for (unsigned int i = 1; i < support.size(); i += 2)
       pushed.displacement(i) -=
         c * (1 - support[i][1] / 2) * (1 + support[i][0]);

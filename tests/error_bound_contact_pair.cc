@@ -25,7 +25,6 @@
 // - meshes that do not match across the pair are refused by name, before
 //   the solve (also with Estimator = bound and no Postprocess/Error bound).
 
-#include <deal.II/dofs/dof_tools.h>
 
 #include <hrcontact/adaptivity/adaptive_run.h>
 #include <hrcontact/adaptivity/equilibrated_stress.h>
@@ -109,12 +108,10 @@ main()
   // its base penetrates the lower body; v = u_h + w lifts the slave nodes
   // back.
   {
-    const auto                    problem = solve_from_text<2>(two_bodies(2));
-    auto                          pushed(problem->results());
-    const auto                   &dh = pushed.spaces.dof_handler_displacement;
-    std::vector<dealii::Point<2>> support(dh.n_dofs());
-    dealii::DoFTools::map_dofs_to_support_points(
-      dealii::StaticMappingQ1<2>::mapping, dh, support);
+    const auto  problem = solve_from_text<2>(two_bodies(2));
+    auto        pushed(problem->results());
+    const auto &dh      = pushed.spaces.dof_handler_displacement;
+    const auto  support = displacement_support_points(pushed);
     std::set<dealii::types::global_dof_index>    upper;
     std::vector<dealii::types::global_dof_index> dofs(8);
     for (const auto &cell : dh.active_cell_iterators())
