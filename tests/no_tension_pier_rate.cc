@@ -73,17 +73,11 @@ int
 main()
 {
   std::cout << std::setprecision(3);
-  const std::string pier =
-    read_file(std::string(SOURCE_DIR) +
-              "/../parameters/no-tension-manufactured-pier-held.prm");
   double previous_max = 0, previous_l2 = 0;
   for (const unsigned int r : {2u, 3u, 4u})
     {
       const auto problem = solve_from_text<2>(
-        pier +
-        "subsection Geometry\n  set Global refinements = " + std::to_string(r) +
-        "\nend\nsubsection Output\n  set Write solution = false\n"
-        "  set Output directory = results\nend\n");
+        scene_at_refinement("no-tension-manufactured-pier-held", 2, r));
       const auto        &res   = problem->results();
       const unsigned int cells = 1u << r;
       const double       h     = b / cells;
