@@ -1,8 +1,8 @@
 #!/bin/bash
-# The no-tension scenes with the cone in closed form at the Gauss points
-# (Stress constraint iteration/Method = closed-form projection), one row per
+# The no-tension scenes with the cone at the Gauss points (the scene's
+# Stress constraint iteration/Method, or EXTRA_PRM's), one row per
 # refinement: cells, displacement dofs, material Newton steps, the stress
-# errors against the closed form (manufactured pier) and the wall time.
+# errors against the closed form (the manufactured piers) and the wall time.
 #   scripts/no-tension-table.sh [BUILD_DIR] [SCENE] [REFINEMENTS...]
 # Defaults: build, no-tension-manufactured-pier, 2 3 4 5 6.
 # EXTRA_PRM (text) is appended to every run's parameters.
